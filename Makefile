@@ -1,0 +1,41 @@
+# brash: top-level entry points. A user needs two: `make run` and `make test`.
+BUILD_DIR ?= build
+JOBS      ?= $(shell nproc)
+CASE      ?= cases/jbc_quick
+
+# Every Debian package the project needs (installed with --no-install-recommends: Debian's liggghts
+# recommends ParaView, which conflicts with libvtk9-dev).
+DEB_PACKAGES := g++ make cmake ninja-build pkg-config \
+  libeigen3-dev nlohmann-json3-dev libcli11-dev libyaml-cpp-dev libfmt-dev \
+  libgtest-dev libgmock-dev libbenchmark-dev valgrind \
+  liggghts libliggghts-dev openmpi-bin libopenmpi-dev \
+  libode-dev libvtk9-dev gnuplot-nox python3-meshio python3-numpy python3-vtk9
+
+.PHONY: deps build test run bench clean
+
+deps:
+	@missing=""; for p in $(DEB_PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then \
+	  echo "brash: installing Debian packages:$$missing"; \
+	  SUDO=""; [ "$$(id -u)" -eq 0 ] || SUDO=sudo; \
+	  $$SUDO apt-get update -q && \
+	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -q --no-install-recommends $$missing; \
+	else echo "brash: all Debian packages present"; fi
+
+$(BUILD_DIR)/build.ninja:
+	cmake -S . -B $(BUILD_DIR) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
+
+build: deps $(BUILD_DIR)/build.ninja
+	cmake --build $(BUILD_DIR) -j $(JOBS)
+
+test: build
+	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS) --timeout 1500
+
+run: build
+	./scripts/brash-run $(CASE)
+
+bench: build
+	./scripts/brash-bench
+
+clean:
+	rm -rf $(BUILD_DIR)
