@@ -1,0 +1,86 @@
+// Validation and string conversion of FluidParams.
+#include "brash/core/params.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+
+#include "brash/error.hpp"
+
+namespace brash::core {
+namespace {
+
+bool finite(const Vec3& v) { return v.allFinite(); }
+
+void check_ca(std::vector<std::string>& out, const char* name, const Vec3& ca) {
+  if (!finite(ca) || (ca.array() < 0).any())
+    out.push_back(fmt::format("ca.{} = ({}, {}, {}): added-mass coefficients must be finite and >= 0", name,
+                              ca.x(), ca.y(), ca.z()));
+}
+
+}  // namespace
+
+std::vector<std::string> FluidParams::problems() const {
+  std::vector<std::string> out;
+  if (!(water_density_kg_m3 > 0) || !std::isfinite(water_density_kg_m3))
+    out.push_back(fmt::format("water_density = {}: must be a positive number (kg/m^3)", water_density_kg_m3));
+  if (!std::isfinite(water_level_m)) out.push_back("water_level: must be finite (m)");
+  if (!(gravity_m_s2 >= 0) || !std::isfinite(gravity_m_s2))
+    out.push_back(fmt::format("gravity = {}: must be >= 0 (m/s^2)", gravity_m_s2));
+  if (!finite(flow_velocity_m_s)) out.push_back("flow_velocity: must be finite (m/s)");
+  if (!(drag_coefficient >= 0) || !std::isfinite(drag_coefficient))
+    out.push_back(fmt::format("drag_coefficient = {}: must be >= 0", drag_coefficient));
+  if (!(kinematic_viscosity_m2_s > 0) || !std::isfinite(kinematic_viscosity_m2_s))
+    out.push_back(fmt::format("kinematic_viscosity = {}: must be > 0 (m^2/s)", kinematic_viscosity_m2_s));
+  check_ca(out, "above", ca.above);
+  check_ca(out, "submerged", ca.submerged);
+  check_ca(out, "submerged_reversed", ca.submerged_reversed);
+  check_ca(out, "partial", ca.partial);
+  check_ca(out, "partial_reversed", ca.partial_reversed);
+  return out;
+}
+
+void FluidParams::validate(std::string_view context) const {
+  const auto p = problems();
+  if (p.empty()) return;
+  std::string msg = fmt::format("{}: invalid fluid parameters:", context);
+  for (const auto& s : p) msg += "\n  - " + s;
+  throw InputError(msg);
+}
+
+FluidModel parse_fluid_model(std::string_view s) {
+  if (s == "drag") return FluidModel::Drag;
+  if (s == "added_mass") return FluidModel::AddedMass;
+  if (s == "both") return FluidModel::Both;
+  throw InputError(fmt::format("unknown fluid model '{}' (expected drag | added_mass | both)", s));
+}
+
+Treatment parse_treatment(std::string_view s) {
+  if (s == "explicit") return Treatment::Explicit;
+  if (s == "implicit") return Treatment::Implicit;
+  throw InputError(fmt::format("unknown acceleration treatment '{}' (expected explicit | implicit)", s));
+}
+
+DragLaw parse_drag_law(std::string_view s) {
+  if (s == "constant") return DragLaw::Constant;
+  if (s == "schiller_naumann") return DragLaw::SchillerNaumann;
+  throw InputError(fmt::format("unknown drag law '{}' (expected constant | schiller_naumann)", s));
+}
+
+CaTable parse_ca_table(std::string_view s) {
+  if (s == "table1") return CaTable::table1();
+  if (s == "text") return CaTable::text_variant();
+  throw InputError(fmt::format("unknown added-mass table '{}' (expected table1 | text)", s));
+}
+
+std::string to_string(FluidModel m) {
+  switch (m) {
+    case FluidModel::Drag: return "drag";
+    case FluidModel::AddedMass: return "added_mass";
+    case FluidModel::Both: return "both";
+  }
+  return "?";
+}
+std::string to_string(Treatment t) { return t == Treatment::Explicit ? "explicit" : "implicit"; }
+std::string to_string(DragLaw d) { return d == DragLaw::Constant ? "constant" : "schiller_naumann"; }
+
+}  // namespace brash::core
