@@ -1,0 +1,153 @@
+// brash::Case: the case file (cases/<name>/case.yaml, schema in docs/case_format.md) as value types.
+// load_case() reads and validates a case.yaml, fills every default and resolves paths to absolute ones;
+// dump_case_yaml() writes the resolved case (a run directory's case.yaml), and
+// load_case(file containing dump_case_yaml(c)) == c.
+// All quantities are SI; the unit is in each field's name.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace brash {
+
+enum class IceClass { IA_super, IA, IB, IC };
+enum class PackingMode { Volume, StrictTwoLayer };    // YAML: volume | strict_two_layer
+enum class FluidModel { Drag, AddedMass, Both };      // YAML: drag | added_mass | both
+enum class Treatment { Implicit, Explicit };          // YAML: implicit | explicit
+enum class DragLaw { Constant, SchillerNaumann };     // YAML: constant | schiller_naumann
+enum class CaTable { Table1, Text };                  // YAML: table1 | text
+
+// YAML spelling of each enum value (the inverse is done by the loader, with an error on unknown text).
+std::string_view to_string(IceClass v);
+std::string_view to_string(PackingMode v);
+std::string_view to_string(FluidModel v);
+std::string_view to_string(Treatment v);
+std::string_view to_string(DragLaw v);
+std::string_view to_string(CaTable v);
+
+// FSICR design ice thickness H_M of a Finnish-Swedish ice class: IA_super/IA 1.0, IB 0.8, IC 0.6 m.
+double h_m_for_ice_class(IceClass c);
+
+struct HullSpec {
+  std::filesystem::path file;              // absolute (see resolve_hull_file)
+  double draft_m = 0.4125;                 // STL keel at z=0, waterline at z=draft
+  double lpp_m = 7.0;
+  double beam_m = 1.125;
+  double start_x_m = -7.2;                 // x of the aft perpendicular at t=0 (channel starts at x=0)
+  std::optional<std::array<double, 2>> band_m;  // [below, above] the waterline; nullopt = full hull
+  bool operator==(const HullSpec&) const = default;
+};
+
+struct ShipSpec {
+  double speed_m_s = 0.482;
+  double scale_lambda = 28.5;
+  IceClass ice_class = IceClass::IA;
+  bool operator==(const ShipSpec&) const = default;
+};
+
+struct ChannelSpec {
+  double length_m = 21.0;                  // x in [0, length]
+  double width_m = 2.25;                   // y in [-width/2, width/2]
+  bool operator==(const ChannelSpec&) const = default;
+};
+
+struct IceSpec {
+  double thickness_m = 0.03515;
+  double diameter_mean_m = 0.017578;
+  double diameter_sd_m = 0.017578 * 0.05;  // default: 5 % of the mean (of the case's mean)
+  double diameter_truncation_sd = 3.0;
+  double density_kg_m3 = 900.0;
+  double porosity = 0.28;
+  PackingMode packing_mode = PackingMode::Volume;
+  std::uint64_t seed = 1;
+  std::filesystem::path packing_file;      // absolute; default <case>/generated/packing.csv
+  bool operator==(const IceSpec&) const = default;
+};
+
+struct WaterSpec {
+  double density_kg_m3 = 1000.0;
+  double level_m = 0.0;
+  double gravity_m_s2 = 9.81;
+  double kinematic_viscosity_m2_s = 1.79e-6;
+  bool operator==(const WaterSpec&) const = default;
+};
+
+struct FrictionSpec {
+  double ice_ice = 1.35;
+  double ice_hull = 0.1;
+  double ice_wall = 1.35;
+  bool operator==(const FrictionSpec&) const = default;
+};
+
+struct ContactSpec {
+  double youngs_modulus_pa = 5.0e6;
+  double poisson_ratio = 0.3;
+  double restitution = 0.3;
+  bool operator==(const ContactSpec&) const = default;
+};
+
+struct FluidSpec {
+  FluidModel model = FluidModel::AddedMass;
+  Treatment treatment = Treatment::Implicit;
+  double drag_coefficient = 0.44;
+  DragLaw drag_law = DragLaw::Constant;
+  CaTable ca_table = CaTable::Table1;
+  bool operator==(const FluidSpec&) const = default;
+};
+
+struct RunSpec {
+  double duration_s = 40.0;
+  double timestep_s = 5.0e-5;
+  double output_interval_s = 0.01;
+  double dump_interval_s = 1.0;
+  std::array<double, 2> window_s = {15.0, 40.0};
+  bool operator==(const RunSpec&) const = default;
+};
+
+// Optional overrides of the FSICR hull parameters measured on the STL (full scale).
+struct FsicrOverrides {
+  std::optional<double> alpha_deg, phi1_deg, phi2_deg, psi_deg, L_par_m, L_bow_m, A_wf_m2;
+  bool operator==(const FsicrOverrides&) const = default;
+};
+
+struct Case {
+  std::string name;
+  std::string description;
+  HullSpec hull;
+  ShipSpec ship;
+  ChannelSpec channel;
+  IceSpec ice;
+  WaterSpec water;
+  FrictionSpec friction;
+  ContactSpec contact;
+  FluidSpec fluid;
+  RunSpec run;
+  FsicrOverrides fsicr;
+  bool operator==(const Case&) const = default;
+};
+
+// Reads, validates and resolves a case file. Throws brash::InputError naming the file, the key
+// (e.g. "ice.porosity") and the line where known, for: unreadable file, YAML syntax, unknown key,
+// wrong type, NaN/inf, out-of-range value, unknown enum text, inconsistent values.
+Case load_case(const std::filesystem::path& case_yaml);
+
+// Same, from YAML text; relative paths resolve against base_dir; `source` names it in messages.
+Case parse_case(const std::string& yaml_text, const std::filesystem::path& base_dir,
+                const std::string& source);
+
+// The resolved case as YAML (every key written, absolute paths, doubles in shortest round-trip form).
+std::string dump_case_yaml(const Case& c);
+
+// Where a relative hull file name is looked up, in order: the case folder, $BRASH_HULL_DIR,
+// <build>/hull_meshes/, <repo>/hull_meshes/. Absolute names are returned as they are.
+std::vector<std::filesystem::path> hull_file_candidates(const std::filesystem::path& case_dir,
+                                                        const std::filesystem::path& file);
+// The first existing candidate; if none exists, <case_dir>/file (runners report it as missing).
+std::filesystem::path resolve_hull_file(const std::filesystem::path& case_dir,
+                                        const std::filesystem::path& file);
+
+}  // namespace brash

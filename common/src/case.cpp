@@ -1,0 +1,466 @@
+// Case loader and writer (see brash/case.hpp and docs/case_format.md).
+// The loader is strict on purpose: a typo in a key silently falling back to a default would make a
+// run answer a different question, so unknown keys, wrong types and NaN are errors naming file,
+// line and key.
+#include "brash/case.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <sstream>
+
+#include "brash/error.hpp"
+
+#ifndef BRASH_SOURCE_DIR
+#define BRASH_SOURCE_DIR ""
+#endif
+#ifndef BRASH_BINARY_DIR
+#define BRASH_BINARY_DIR ""
+#endif
+
+namespace fs = std::filesystem;
+
+namespace brash {
+
+// ---------------------------------------------------------------- enum spellings
+namespace {
+template <class E>
+struct EnumText {
+  E value;
+  std::string_view text;
+};
+constexpr EnumText<IceClass> kIceClass[] = {
+    {IceClass::IA_super, "IA_super"}, {IceClass::IA, "IA"}, {IceClass::IB, "IB"}, {IceClass::IC, "IC"}};
+constexpr EnumText<PackingMode> kPackingMode[] = {{PackingMode::Volume, "volume"},
+                                                  {PackingMode::StrictTwoLayer, "strict_two_layer"}};
+constexpr EnumText<FluidModel> kFluidModel[] = {
+    {FluidModel::Drag, "drag"}, {FluidModel::AddedMass, "added_mass"}, {FluidModel::Both, "both"}};
+constexpr EnumText<Treatment> kTreatment[] = {{Treatment::Implicit, "implicit"},
+                                              {Treatment::Explicit, "explicit"}};
+constexpr EnumText<DragLaw> kDragLaw[] = {{DragLaw::Constant, "constant"},
+                                          {DragLaw::SchillerNaumann, "schiller_naumann"}};
+constexpr EnumText<CaTable> kCaTable[] = {{CaTable::Table1, "table1"}, {CaTable::Text, "text"}};
+
+template <class E, std::size_t N>
+std::string_view text_of(const EnumText<E> (&table)[N], E v) {
+  for (const auto& e : table)
+    if (e.value == v) return e.text;
+  return "?";
+}
+}  // namespace
+
+std::string_view to_string(IceClass v) { return text_of(kIceClass, v); }
+std::string_view to_string(PackingMode v) { return text_of(kPackingMode, v); }
+std::string_view to_string(FluidModel v) { return text_of(kFluidModel, v); }
+std::string_view to_string(Treatment v) { return text_of(kTreatment, v); }
+std::string_view to_string(DragLaw v) { return text_of(kDragLaw, v); }
+std::string_view to_string(CaTable v) { return text_of(kCaTable, v); }
+
+double h_m_for_ice_class(IceClass c) {
+  switch (c) {
+    case IceClass::IA_super:
+    case IceClass::IA: return 1.0;
+    case IceClass::IB: return 0.8;
+    case IceClass::IC: return 0.6;
+  }
+  return 1.0;
+}
+
+// ---------------------------------------------------------------- hull file lookup
+std::vector<fs::path> hull_file_candidates(const fs::path& case_dir, const fs::path& file) {
+  if (file.is_absolute()) return {file};
+  std::vector<fs::path> out{case_dir / file};
+  if (const char* env = std::getenv("BRASH_HULL_DIR"); env != nullptr && *env != '\0')
+    out.push_back(fs::path(env) / file);
+  if (std::string_view(BRASH_BINARY_DIR).size() > 0)
+    out.push_back(fs::path(BRASH_BINARY_DIR) / "hull_meshes" / file);
+  if (std::string_view(BRASH_SOURCE_DIR).size() > 0)
+    out.push_back(fs::path(BRASH_SOURCE_DIR) / "hull_meshes" / file);
+  return out;
+}
+
+fs::path resolve_hull_file(const fs::path& case_dir, const fs::path& file) {
+  for (const auto& p : hull_file_candidates(case_dir, file)) {
+    std::error_code ec;
+    if (fs::is_regular_file(p, ec)) return fs::absolute(p).lexically_normal();
+  }
+  return fs::absolute(case_dir / file).lexically_normal();
+}
+
+// ---------------------------------------------------------------- reading
+namespace {
+
+struct Reader {
+  std::string source;  // file name for messages
+
+  [[noreturn]] void fail(const YAML::Node& n, const std::string& key, const std::string& msg) const {
+    const YAML::Mark m = n.IsDefined() ? n.Mark() : YAML::Mark::null_mark();
+    if (m.line >= 0)
+      throw InputError(fmt::format("{}:{}:{}: key '{}': {}", source, m.line + 1, m.column + 1, key, msg));
+    throw InputError(fmt::format("{}: key '{}': {}", source, key, msg));
+  }
+
+  // Every key of a mapping must be one of `known`; a section that is not a mapping is an error.
+  void check_map(const YAML::Node& n, const std::string& where,
+                 std::initializer_list<std::string_view> known) const {
+    if (!n.IsMap()) fail(n, where.empty() ? "<top>" : where, "expected a mapping of keys");
+    for (const auto& kv : n) {
+      const std::string k = kv.first.as<std::string>();
+      if (std::find(known.begin(), known.end(), k) == known.end()) {
+        std::string list;
+        for (auto s : known) list += (list.empty() ? "" : ", ") + std::string(s);
+        fail(kv.first, where.empty() ? k : where + "." + k, "unknown key (known: " + list + ")");
+      }
+    }
+  }
+
+  static std::string join(const std::string& where, std::string_view k) {
+    return where.empty() ? std::string(k) : where + "." + std::string(k);
+  }
+
+  double to_double(const YAML::Node& v, const std::string& key) const {
+    if (!v.IsScalar()) fail(v, key, "expected a number");
+    double x = 0;
+    try {
+      x = v.as<double>();
+    } catch (const YAML::Exception&) {
+      fail(v, key, fmt::format("expected a number, got '{}'", v.Scalar()));
+    }
+    if (!std::isfinite(x)) fail(v, key, fmt::format("must be a finite number, got '{}'", v.Scalar()));
+    return x;
+  }
+
+  // Reads a number if present (else keeps `out`) and checks it with `ok` (message `need`).
+  void num(const YAML::Node& sec, const std::string& where, std::string_view k, double& out,
+           const std::function<bool(double)>& ok, std::string_view need) const {
+    const YAML::Node v = sec[std::string(k)];
+    if (!v.IsDefined()) return;
+    const std::string key = join(where, k);
+    const double x = to_double(v, key);
+    if (!ok(x)) fail(v, key, fmt::format("must be {}, got {}", need, x));
+    out = x;
+  }
+
+  void opt_num(const YAML::Node& sec, const std::string& where, std::string_view k,
+               std::optional<double>& out) const {
+    const YAML::Node v = sec[std::string(k)];
+    if (!v.IsDefined() || v.IsNull()) return;
+    out = to_double(v, join(where, k));
+  }
+
+  void str(const YAML::Node& sec, const std::string& where, std::string_view k, std::string& out) const {
+    const YAML::Node v = sec[std::string(k)];
+    if (!v.IsDefined()) return;
+    if (!v.IsScalar()) fail(v, join(where, k), "expected a text value");
+    out = v.Scalar();
+  }
+
+  template <class E, std::size_t N>
+  void enumeration(const YAML::Node& sec, const std::string& where, std::string_view k,
+                   const EnumText<E> (&table)[N], E& out) const {
+    const YAML::Node v = sec[std::string(k)];
+    if (!v.IsDefined()) return;
+    const std::string key = join(where, k);
+    if (!v.IsScalar()) fail(v, key, "expected a text value");
+    std::string list;
+    for (const auto& e : table) {
+      if (e.text == v.Scalar()) {
+        out = e.value;
+        return;
+      }
+      list += (list.empty() ? "" : " | ") + std::string(e.text);
+    }
+    fail(v, key, fmt::format("unknown value '{}' (one of: {})", v.Scalar(), list));
+  }
+
+  std::array<double, 2> pair(const YAML::Node& v, const std::string& key) const {
+    if (!v.IsSequence() || v.size() != 2) fail(v, key, "expected a list of two numbers [a, b]");
+    return {to_double(v[0], key + "[0]"), to_double(v[1], key + "[1]")};
+  }
+
+  const YAML::Node section(const YAML::Node& root, std::string_view k,
+                           std::initializer_list<std::string_view> known) const {
+    YAML::Node s = root[std::string(k)];
+    if (!s.IsDefined() || s.IsNull()) return YAML::Node(YAML::NodeType::Map);
+    check_map(s, std::string(k), known);
+    return s;
+  }
+};
+
+const auto positive = [](double x) { return x > 0; };
+const auto non_negative = [](double x) { return x >= 0; };
+const auto any_value = [](double) { return true; };
+
+}  // namespace
+
+Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const std::string& source) {
+  const Reader r{source};
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml_text);
+  } catch (const YAML::ParserException& e) {
+    throw InputError(fmt::format("{}:{}:{}: YAML syntax error: {}", source, e.mark.line + 1,
+                                 e.mark.column + 1, e.msg));
+  }
+  if (!root.IsDefined() || root.IsNull()) throw InputError(source + ": empty case file");
+  r.check_map(root, "", {"name", "description", "hull", "ship", "channel", "ice", "water", "friction",
+                         "contact", "fluid", "run", "fsicr"});
+
+  Case c;
+  if (!root["name"].IsDefined()) throw InputError(source + ": key 'name': missing (required)");
+  r.str(root, "", "name", c.name);
+  if (c.name.empty()) r.fail(root["name"], "name", "must not be empty");
+  r.str(root, "", "description", c.description);
+
+  {  // hull
+    const auto s = r.section(root, "hull", {"file", "draft_m", "lpp_m", "beam_m", "start_x_m", "band_m"});
+    std::string file = "jbc_panamax_model.stl";
+    r.str(s, "hull", "file", file);
+    if (file.empty()) r.fail(s["file"], "hull.file", "must not be empty");
+    c.hull.file = resolve_hull_file(base_dir, file);
+    r.num(s, "hull", "draft_m", c.hull.draft_m, positive, "> 0");
+    r.num(s, "hull", "lpp_m", c.hull.lpp_m, positive, "> 0");
+    r.num(s, "hull", "beam_m", c.hull.beam_m, positive, "> 0");
+    r.num(s, "hull", "start_x_m", c.hull.start_x_m, any_value, "finite");
+    if (const auto b = s["band_m"]; b.IsDefined() && !b.IsNull()) {
+      c.hull.band_m = r.pair(b, "hull.band_m");
+      if ((*c.hull.band_m)[0] < 0 || (*c.hull.band_m)[1] < 0)
+        r.fail(b, "hull.band_m", "both distances (below, above the waterline) must be >= 0");
+    }
+  }
+  {  // ship
+    const auto s = r.section(root, "ship", {"speed_m_s", "scale_lambda", "ice_class"});
+    r.num(s, "ship", "speed_m_s", c.ship.speed_m_s, positive, "> 0");
+    r.num(s, "ship", "scale_lambda", c.ship.scale_lambda, positive, "> 0");
+    r.enumeration(s, "ship", "ice_class", kIceClass, c.ship.ice_class);
+  }
+  {  // channel
+    const auto s = r.section(root, "channel", {"length_m", "width_m"});
+    r.num(s, "channel", "length_m", c.channel.length_m, positive, "> 0");
+    r.num(s, "channel", "width_m", c.channel.width_m, positive, "> 0");
+  }
+  {  // ice
+    const auto s = r.section(root, "ice", {"thickness_m", "diameter_mean_m", "diameter_sd_m",
+                                           "diameter_truncation_sd", "density_kg_m3", "porosity",
+                                           "packing_mode", "seed", "packing_file"});
+    r.num(s, "ice", "thickness_m", c.ice.thickness_m, positive, "> 0");
+    r.num(s, "ice", "diameter_mean_m", c.ice.diameter_mean_m, positive, "> 0");
+    c.ice.diameter_sd_m = 0.05 * c.ice.diameter_mean_m;
+    r.num(s, "ice", "diameter_sd_m", c.ice.diameter_sd_m, non_negative, ">= 0");
+    r.num(s, "ice", "diameter_truncation_sd", c.ice.diameter_truncation_sd, non_negative, ">= 0");
+    r.num(s, "ice", "density_kg_m3", c.ice.density_kg_m3, positive, "> 0");
+    r.num(s, "ice", "porosity", c.ice.porosity, [](double p) { return p > 0 && p < 1; },
+          "in (0, 1)");
+    r.enumeration(s, "ice", "packing_mode", kPackingMode, c.ice.packing_mode);
+    if (const auto v = s["seed"]; v.IsDefined()) {
+      bool ok = v.IsScalar() && !v.Scalar().empty() && v.Scalar()[0] != '-';
+      if (ok) {
+        try {
+          c.ice.seed = v.as<std::uint64_t>();
+        } catch (const YAML::Exception&) {
+          ok = false;
+        }
+      }
+      if (!ok) r.fail(v, "ice.seed", fmt::format("expected a non-negative integer, got '{}'", v.Scalar()));
+    }
+    std::string pf = "generated/packing.csv";
+    r.str(s, "ice", "packing_file", pf);
+    if (pf.empty()) r.fail(s["packing_file"], "ice.packing_file", "must not be empty");
+    c.ice.packing_file = fs::absolute(base_dir / pf).lexically_normal();
+    if (c.ice.diameter_mean_m - c.ice.diameter_truncation_sd * c.ice.diameter_sd_m <= 0)
+      r.fail(s["diameter_sd_m"], "ice.diameter_sd_m",
+             fmt::format("mean - truncation_sd * sd = {} - {} * {} must be > 0 (no zero-size spheres)",
+                         c.ice.diameter_mean_m, c.ice.diameter_truncation_sd, c.ice.diameter_sd_m));
+  }
+  {  // water
+    const auto s = r.section(root, "water",
+                             {"density_kg_m3", "level_m", "gravity_m_s2", "kinematic_viscosity_m2_s"});
+    r.num(s, "water", "density_kg_m3", c.water.density_kg_m3, positive, "> 0");
+    r.num(s, "water", "level_m", c.water.level_m, any_value, "finite");
+    r.num(s, "water", "gravity_m_s2", c.water.gravity_m_s2, positive, "> 0");
+    r.num(s, "water", "kinematic_viscosity_m2_s", c.water.kinematic_viscosity_m2_s, positive, "> 0");
+    if (c.ice.density_kg_m3 >= c.water.density_kg_m3)
+      r.fail(root["ice"]["density_kg_m3"], "ice.density_kg_m3",
+             fmt::format("ice ({} kg/m^3) must be lighter than water.density_kg_m3 ({}) to float",
+                         c.ice.density_kg_m3, c.water.density_kg_m3));
+  }
+  {  // friction
+    const auto s = r.section(root, "friction", {"ice_ice", "ice_hull", "ice_wall"});
+    r.num(s, "friction", "ice_ice", c.friction.ice_ice, non_negative, ">= 0");
+    r.num(s, "friction", "ice_hull", c.friction.ice_hull, non_negative, ">= 0");
+    r.num(s, "friction", "ice_wall", c.friction.ice_wall, non_negative, ">= 0");
+  }
+  {  // contact
+    const auto s = r.section(root, "contact", {"youngs_modulus_pa", "poisson_ratio", "restitution"});
+    r.num(s, "contact", "youngs_modulus_pa", c.contact.youngs_modulus_pa, positive, "> 0");
+    r.num(s, "contact", "poisson_ratio", c.contact.poisson_ratio,
+          [](double v) { return v > -1 && v < 0.5; }, "in (-1, 0.5)");
+    r.num(s, "contact", "restitution", c.contact.restitution,
+          [](double e) { return e > 0 && e <= 1; }, "in (0, 1]");
+  }
+  {  // fluid
+    const auto s = r.section(root, "fluid", {"model", "treatment", "drag_coefficient", "drag_law", "ca_table"});
+    r.enumeration(s, "fluid", "model", kFluidModel, c.fluid.model);
+    r.enumeration(s, "fluid", "treatment", kTreatment, c.fluid.treatment);
+    r.num(s, "fluid", "drag_coefficient", c.fluid.drag_coefficient, non_negative, ">= 0");
+    r.enumeration(s, "fluid", "drag_law", kDragLaw, c.fluid.drag_law);
+    r.enumeration(s, "fluid", "ca_table", kCaTable, c.fluid.ca_table);
+  }
+  {  // run
+    const auto s = r.section(root, "run", {"duration_s", "timestep_s", "output_interval_s",
+                                           "dump_interval_s", "window_s"});
+    r.num(s, "run", "duration_s", c.run.duration_s, positive, "> 0");
+    r.num(s, "run", "timestep_s", c.run.timestep_s, positive, "> 0");
+    r.num(s, "run", "output_interval_s", c.run.output_interval_s, positive, "> 0");
+    r.num(s, "run", "dump_interval_s", c.run.dump_interval_s, positive, "> 0");
+    if (const auto w = s["window_s"]; w.IsDefined()) {
+      c.run.window_s = r.pair(w, "run.window_s");
+    } else if (c.run.window_s[1] > c.run.duration_s) {
+      // Default window [15, 40] s does not fit a short run: average over its last 60 %.
+      c.run.window_s = {0.4 * c.run.duration_s, c.run.duration_s};
+    }
+    const auto [w0, w1] = c.run.window_s;
+    if (!(w0 >= 0 && w0 < w1 && w1 <= c.run.duration_s))
+      r.fail(s["window_s"], "run.window_s",
+             fmt::format("window [{}, {}] s must satisfy 0 <= start < end <= run.duration_s = {}", w0, w1,
+                         c.run.duration_s));
+    if (c.run.timestep_s > c.run.output_interval_s)
+      r.fail(s["timestep_s"], "run.timestep_s",
+             fmt::format("timestep {} s is longer than run.output_interval_s {} s", c.run.timestep_s,
+                         c.run.output_interval_s));
+    if (c.run.output_interval_s > c.run.duration_s)
+      r.fail(s["output_interval_s"], "run.output_interval_s",
+             fmt::format("{} s is longer than run.duration_s {} s", c.run.output_interval_s,
+                         c.run.duration_s));
+  }
+  {  // fsicr
+    const auto s = r.section(root, "fsicr",
+                             {"alpha_deg", "phi1_deg", "phi2_deg", "psi_deg", "L_par_m", "L_bow_m", "A_wf_m2"});
+    r.opt_num(s, "fsicr", "alpha_deg", c.fsicr.alpha_deg);
+    r.opt_num(s, "fsicr", "phi1_deg", c.fsicr.phi1_deg);
+    r.opt_num(s, "fsicr", "phi2_deg", c.fsicr.phi2_deg);
+    r.opt_num(s, "fsicr", "psi_deg", c.fsicr.psi_deg);
+    r.opt_num(s, "fsicr", "L_par_m", c.fsicr.L_par_m);
+    r.opt_num(s, "fsicr", "L_bow_m", c.fsicr.L_bow_m);
+    r.opt_num(s, "fsicr", "A_wf_m2", c.fsicr.A_wf_m2);
+  }
+  return c;
+}
+
+Case load_case(const fs::path& case_yaml) {
+  std::ifstream in(case_yaml);
+  if (!in) throw InputError(case_yaml.string() + ": cannot open case file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const fs::path dir = fs::absolute(case_yaml).parent_path();
+  return parse_case(ss.str(), dir, case_yaml.string());
+}
+
+// ---------------------------------------------------------------- writing
+namespace {
+
+// Double-quoted YAML string (always quoted so text like "no" or "1.0" stays text).
+std::string yaml_quoted(std::string_view s) {
+  std::string out = "\"";
+  for (const char ch : s) {
+    switch (ch) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\n': out += "\\n"; break;
+      case '\t': out += "\\t"; break;
+      case '\r': out += "\\r"; break;
+      default:
+        if (static_cast<unsigned char>(ch) < 0x20)
+          out += fmt::format("\\x{:02x}", static_cast<unsigned char>(ch));
+        else
+          out += ch;
+    }
+  }
+  return out + "\"";
+}
+
+// Shortest text that reads back to the same double; always carries a '.' or exponent.
+std::string num(double x) {
+  std::string s = fmt::format("{}", x);
+  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+  return s;
+}
+
+}  // namespace
+
+std::string dump_case_yaml(const Case& c) {
+  std::string o;
+  auto line = [&o](std::string_view indent, std::string_view key, const std::string& v) {
+    o += fmt::format("{}{}: {}\n", indent, key, v);
+  };
+  auto pair = [](const std::array<double, 2>& p) { return fmt::format("[{}, {}]", num(p[0]), num(p[1])); };
+  o += "# brash resolved case: every default filled in, paths absolute (docs/case_format.md)\n";
+  line("", "name", yaml_quoted(c.name));
+  line("", "description", yaml_quoted(c.description));
+  o += "hull:\n";
+  line("  ", "file", yaml_quoted(c.hull.file.string()));
+  line("  ", "draft_m", num(c.hull.draft_m));
+  line("  ", "lpp_m", num(c.hull.lpp_m));
+  line("  ", "beam_m", num(c.hull.beam_m));
+  line("  ", "start_x_m", num(c.hull.start_x_m));
+  if (c.hull.band_m) line("  ", "band_m", pair(*c.hull.band_m));
+  o += "ship:\n";
+  line("  ", "speed_m_s", num(c.ship.speed_m_s));
+  line("  ", "scale_lambda", num(c.ship.scale_lambda));
+  line("  ", "ice_class", std::string(to_string(c.ship.ice_class)));
+  o += "channel:\n";
+  line("  ", "length_m", num(c.channel.length_m));
+  line("  ", "width_m", num(c.channel.width_m));
+  o += "ice:\n";
+  line("  ", "thickness_m", num(c.ice.thickness_m));
+  line("  ", "diameter_mean_m", num(c.ice.diameter_mean_m));
+  line("  ", "diameter_sd_m", num(c.ice.diameter_sd_m));
+  line("  ", "diameter_truncation_sd", num(c.ice.diameter_truncation_sd));
+  line("  ", "density_kg_m3", num(c.ice.density_kg_m3));
+  line("  ", "porosity", num(c.ice.porosity));
+  line("  ", "packing_mode", std::string(to_string(c.ice.packing_mode)));
+  line("  ", "seed", fmt::format("{}", c.ice.seed));
+  line("  ", "packing_file", yaml_quoted(c.ice.packing_file.string()));
+  o += "water:\n";
+  line("  ", "density_kg_m3", num(c.water.density_kg_m3));
+  line("  ", "level_m", num(c.water.level_m));
+  line("  ", "gravity_m_s2", num(c.water.gravity_m_s2));
+  line("  ", "kinematic_viscosity_m2_s", num(c.water.kinematic_viscosity_m2_s));
+  o += "friction:\n";
+  line("  ", "ice_ice", num(c.friction.ice_ice));
+  line("  ", "ice_hull", num(c.friction.ice_hull));
+  line("  ", "ice_wall", num(c.friction.ice_wall));
+  o += "contact:\n";
+  line("  ", "youngs_modulus_pa", num(c.contact.youngs_modulus_pa));
+  line("  ", "poisson_ratio", num(c.contact.poisson_ratio));
+  line("  ", "restitution", num(c.contact.restitution));
+  o += "fluid:\n";
+  line("  ", "model", std::string(to_string(c.fluid.model)));
+  line("  ", "treatment", std::string(to_string(c.fluid.treatment)));
+  line("  ", "drag_coefficient", num(c.fluid.drag_coefficient));
+  line("  ", "drag_law", std::string(to_string(c.fluid.drag_law)));
+  line("  ", "ca_table", std::string(to_string(c.fluid.ca_table)));
+  o += "run:\n";
+  line("  ", "duration_s", num(c.run.duration_s));
+  line("  ", "timestep_s", num(c.run.timestep_s));
+  line("  ", "output_interval_s", num(c.run.output_interval_s));
+  line("  ", "dump_interval_s", num(c.run.dump_interval_s));
+  line("  ", "window_s", pair(c.run.window_s));
+  const std::pair<std::string_view, const std::optional<double>*> fs_keys[] = {
+      {"alpha_deg", &c.fsicr.alpha_deg}, {"phi1_deg", &c.fsicr.phi1_deg}, {"phi2_deg", &c.fsicr.phi2_deg},
+      {"psi_deg", &c.fsicr.psi_deg},     {"L_par_m", &c.fsicr.L_par_m},   {"L_bow_m", &c.fsicr.L_bow_m},
+      {"A_wf_m2", &c.fsicr.A_wf_m2}};
+  std::string fsicr;
+  for (const auto& [k, v] : fs_keys)
+    if (v->has_value()) fsicr += fmt::format("  {}: {}\n", k, num(**v));
+  o += fsicr.empty() ? "fsicr: {}\n" : "fsicr:\n" + fsicr;
+  return o;
+}
+
+}  // namespace brash

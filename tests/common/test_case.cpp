@@ -1,0 +1,213 @@
+// Tests of the case loader: defaults, path resolution, round trip, and one InputError per kind of
+// bad input whose message must name the file and the key.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+
+#include "brash/case.hpp"
+#include "brash/error.hpp"
+
+namespace fs = std::filesystem;
+using brash::Case;
+
+namespace {
+
+fs::path temp_dir(const std::string& tag) {
+  const fs::path d = fs::temp_directory_path() / ("brash_test_case_" + tag + "_" + std::to_string(::getpid()));
+  fs::create_directories(d);
+  return d;
+}
+
+fs::path write_case(const fs::path& dir, const std::string& text, const std::string& name = "case.yaml") {
+  const fs::path p = dir / name;
+  std::ofstream(p) << text;
+  return p;
+}
+
+// Loads `text`; expects an InputError whose message contains the file name and every `parts`.
+void expect_error(const std::string& text, std::initializer_list<std::string> parts) {
+  const fs::path dir = temp_dir("bad");
+  const fs::path p = write_case(dir, text, "bad_case.yaml");
+  try {
+    (void)brash::load_case(p);
+    ADD_FAILURE() << "no InputError for:\n" << text;
+  } catch (const brash::InputError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("bad_case.yaml"), std::string::npos) << msg;
+    for (const auto& part : parts) EXPECT_NE(msg.find(part), std::string::npos) << "'" << part << "' not in: " << msg;
+  }
+}
+
+const fs::path kRepo = BRASH_SOURCE_DIR;
+
+}  // namespace
+
+TEST(CaseLoader, MinimalCaseFillsPaperDefaults) {
+  const fs::path dir = temp_dir("min");
+  const Case c = brash::load_case(write_case(dir, "name: m\n"));
+  EXPECT_EQ(c.name, "m");
+  EXPECT_DOUBLE_EQ(c.ship.speed_m_s, 0.482);
+  EXPECT_DOUBLE_EQ(c.ship.scale_lambda, 28.5);
+  EXPECT_EQ(c.ship.ice_class, brash::IceClass::IA);
+  EXPECT_DOUBLE_EQ(c.channel.length_m, 21.0);
+  EXPECT_DOUBLE_EQ(c.channel.width_m, 2.25);
+  EXPECT_DOUBLE_EQ(c.ice.diameter_sd_m, 0.05 * 0.017578);
+  EXPECT_DOUBLE_EQ(c.ice.porosity, 0.28);
+  EXPECT_EQ(c.ice.packing_mode, brash::PackingMode::Volume);
+  EXPECT_EQ(c.ice.seed, 1u);
+  EXPECT_EQ(c.ice.packing_file, fs::absolute(dir / "generated/packing.csv").lexically_normal());
+  EXPECT_DOUBLE_EQ(c.water.density_kg_m3, 1000);
+  EXPECT_DOUBLE_EQ(c.friction.ice_ice, 1.35);
+  EXPECT_DOUBLE_EQ(c.friction.ice_hull, 0.1);
+  EXPECT_EQ(c.fluid.model, brash::FluidModel::AddedMass);
+  EXPECT_EQ(c.fluid.treatment, brash::Treatment::Implicit);
+  EXPECT_EQ(c.run.window_s, (std::array<double, 2>{15.0, 40.0}));
+  EXPECT_FALSE(c.hull.band_m.has_value());
+  EXPECT_FALSE(c.fsicr.alpha_deg.has_value());
+  EXPECT_TRUE(c.hull.file.is_absolute());
+}
+
+TEST(CaseLoader, SdDefaultsToFivePercentOfTheCasesMean) {
+  const Case c = brash::load_case(write_case(temp_dir("sd"), "name: m\nice: {diameter_mean_m: 0.04}\n"));
+  EXPECT_DOUBLE_EQ(c.ice.diameter_sd_m, 0.002);
+}
+
+TEST(CaseLoader, ShortRunGetsWindowOverItsLastPart) {
+  const Case c = brash::load_case(write_case(temp_dir("win"), "name: m\nrun: {duration_s: 5.0}\n"));
+  EXPECT_DOUBLE_EQ(c.run.window_s[0], 2.0);
+  EXPECT_DOUBLE_EQ(c.run.window_s[1], 5.0);
+}
+
+TEST(CaseLoader, HullFileSearchOrder) {
+  const fs::path dir = temp_dir("hull");
+  const fs::path other = temp_dir("hulldir");
+  std::ofstream(other / "my_hull.stl") << "solid x\nendsolid x\n";
+  ::setenv("BRASH_HULL_DIR", other.c_str(), 1);
+  Case c = brash::load_case(write_case(dir, "name: m\nhull: {file: my_hull.stl}\n"));
+  EXPECT_EQ(c.hull.file, fs::absolute(other / "my_hull.stl").lexically_normal());
+  std::ofstream(dir / "my_hull.stl") << "solid x\nendsolid x\n";  // the case folder wins
+  c = brash::load_case(dir / "case.yaml");
+  EXPECT_EQ(c.hull.file, fs::absolute(dir / "my_hull.stl").lexically_normal());
+  ::unsetenv("BRASH_HULL_DIR");
+  // Missing everywhere: resolved against the case folder (runners report it missing).
+  c = brash::load_case(write_case(dir, "name: m\nhull: {file: nowhere.stl}\n"));
+  EXPECT_EQ(c.hull.file, fs::absolute(dir / "nowhere.stl").lexically_normal());
+}
+
+TEST(CaseLoader, PaperCaseLoadsWithPaperNumbers) {
+  const Case c = brash::load_case(kRepo / "cases/jbc_ia_5kn/case.yaml");
+  EXPECT_EQ(c.name, "jbc_ia_5kn");
+  EXPECT_DOUBLE_EQ(c.ship.speed_m_s, 0.482);
+  EXPECT_DOUBLE_EQ(c.run.duration_s, 40.0);
+  EXPECT_EQ(c.run.window_s, (std::array<double, 2>{15.0, 40.0}));
+  EXPECT_DOUBLE_EQ(c.ship.scale_lambda, 28.5);
+  EXPECT_DOUBLE_EQ(c.friction.ice_ice, 1.35);
+  EXPECT_DOUBLE_EQ(c.friction.ice_hull, 0.1);
+  EXPECT_DOUBLE_EQ(c.friction.ice_wall, 1.35);
+  EXPECT_DOUBLE_EQ(brash::h_m_for_ice_class(c.ship.ice_class), 1.0);
+  EXPECT_DOUBLE_EQ(c.channel.length_m, 21.0);
+  EXPECT_DOUBLE_EQ(c.channel.width_m, 2.25);
+  EXPECT_DOUBLE_EQ(c.ice.thickness_m, 0.03515);
+  EXPECT_DOUBLE_EQ(c.ice.diameter_mean_m, 0.017578);
+  EXPECT_DOUBLE_EQ(c.ice.porosity, 0.28);
+  EXPECT_EQ(c.fluid.model, brash::FluidModel::AddedMass);
+  EXPECT_EQ(c.fluid.treatment, brash::Treatment::Implicit);
+  EXPECT_EQ(c.hull.file.filename(), "jbc_panamax_model.stl");
+  const Case q = brash::load_case(kRepo / "cases/jbc_quick/case.yaml");
+  EXPECT_EQ(q.name, "jbc_quick");
+  EXPECT_LT(q.run.duration_s, 10.0);
+}
+
+TEST(CaseLoader, IceClassThickness) {
+  EXPECT_DOUBLE_EQ(brash::h_m_for_ice_class(brash::IceClass::IA_super), 1.0);
+  EXPECT_DOUBLE_EQ(brash::h_m_for_ice_class(brash::IceClass::IA), 1.0);
+  EXPECT_DOUBLE_EQ(brash::h_m_for_ice_class(brash::IceClass::IB), 0.8);
+  EXPECT_DOUBLE_EQ(brash::h_m_for_ice_class(brash::IceClass::IC), 0.6);
+}
+
+TEST(CaseLoader, DumpThenLoadGivesTheSameCase) {
+  for (const char* name : {"jbc_ia_5kn", "jbc_quick"}) {
+    Case c = brash::load_case(kRepo / "cases" / name / "case.yaml");
+    c.description = "quotes \" and backslash \\ and: colon\nnew line";
+    c.fsicr.alpha_deg = 38.123456789012345;
+    c.fsicr.A_wf_m2 = 1.0 / 3.0;
+    c.hull.band_m = std::array<double, 2>{0.1, 0.2};
+    c.ice.seed = 18446744073709551615ull;
+    c.fluid.model = brash::FluidModel::Both;
+    c.fluid.drag_law = brash::DragLaw::SchillerNaumann;
+    c.fluid.ca_table = brash::CaTable::Text;
+    c.ship.ice_class = brash::IceClass::IA_super;
+    c.ice.packing_mode = brash::PackingMode::StrictTwoLayer;
+    c.contact.youngs_modulus_pa = 5e6;
+    const fs::path run = temp_dir(std::string("rt_") + name);
+    const Case back = brash::load_case(write_case(run, brash::dump_case_yaml(c)));
+    EXPECT_EQ(back, c) << brash::dump_case_yaml(c) << "\n---\n" << brash::dump_case_yaml(back);
+    EXPECT_EQ(brash::dump_case_yaml(back), brash::dump_case_yaml(c));
+  }
+}
+
+TEST(CaseLoaderErrors, UnknownKeyNamesFileKeyAndLine) {
+  expect_error("name: x\nice:\n  porosty: 0.3\n", {"ice.porosty", "unknown key", ":3:"});
+  expect_error("name: x\nhul: {}\n", {"hul", "unknown key"});
+}
+
+TEST(CaseLoaderErrors, WrongType) {
+  expect_error("name: x\nship:\n  speed_m_s: fast\n", {"ship.speed_m_s", "expected a number", ":3:"});
+  expect_error("name: x\nship: 3\n", {"ship", "mapping"});
+  expect_error("name: x\nrun: {window_s: 15}\n", {"run.window_s", "two numbers"});
+  expect_error("name: x\nice: {seed: -3}\n", {"ice.seed", "integer"});
+  expect_error("name: x\nice: {seed: 1.5}\n", {"ice.seed", "integer"});
+}
+
+TEST(CaseLoaderErrors, NegativeDensity) {
+  expect_error("name: x\nice: {density_kg_m3: -900}\n", {"ice.density_kg_m3", "> 0"});
+  expect_error("name: x\nwater: {density_kg_m3: -1}\n", {"water.density_kg_m3", "> 0"});
+  expect_error("name: x\nice: {density_kg_m3: 1100}\n", {"ice.density_kg_m3", "lighter"});
+}
+
+TEST(CaseLoaderErrors, PorosityOutsideOpenUnitInterval) {
+  expect_error("name: x\nice: {porosity: 1.0}\n", {"ice.porosity", "(0, 1)"});
+  expect_error("name: x\nice: {porosity: 0}\n", {"ice.porosity", "(0, 1)"});
+  expect_error("name: x\nice: {porosity: -0.2}\n", {"ice.porosity", "(0, 1)"});
+}
+
+TEST(CaseLoaderErrors, WindowOutsideDuration) {
+  expect_error("name: x\nrun: {duration_s: 40, window_s: [15, 45]}\n", {"run.window_s", "duration"});
+  expect_error("name: x\nrun: {window_s: [20, 10]}\n", {"run.window_s"});
+  expect_error("name: x\nrun: {window_s: [-1, 10]}\n", {"run.window_s"});
+}
+
+TEST(CaseLoaderErrors, UnknownEnumValue) {
+  expect_error("name: x\nfluid:\n  model: potential_flow\n", {"fluid.model", "potential_flow", "added_mass"});
+  expect_error("name: x\nfluid: {treatment: semi}\n", {"fluid.treatment", "semi"});
+  expect_error("name: x\nship: {ice_class: II}\n", {"ship.ice_class", "II"});
+  expect_error("name: x\nice: {packing_mode: dense}\n", {"ice.packing_mode", "dense"});
+}
+
+TEST(CaseLoaderErrors, NaNAndInfinity) {
+  expect_error("name: x\nship: {speed_m_s: .nan}\n", {"ship.speed_m_s", "finite"});
+  expect_error("name: x\nfriction: {ice_ice: .inf}\n", {"friction.ice_ice", "finite"});
+  expect_error("name: x\nfsicr: {alpha_deg: .nan}\n", {"fsicr.alpha_deg", "finite"});
+  expect_error("name: x\nice: {porosity: nan}\n", {"ice.porosity"});
+}
+
+TEST(CaseLoaderErrors, OtherChecks) {
+  expect_error("description: no name\n", {"name", "missing"});
+  expect_error("name: x\nice: {diameter_mean_m: 0.01, diameter_sd_m: 0.005}\n", {"ice.diameter_sd_m"});
+  expect_error("name: x\nrun: {timestep_s: 0.1, output_interval_s: 0.01}\n", {"run.timestep_s"});
+  expect_error("name: x\ncontact: {poisson_ratio: 0.6}\n", {"contact.poisson_ratio"});
+  expect_error("name: [x\n", {"YAML syntax"});
+}
+
+TEST(CaseLoaderErrors, MissingFile) {
+  try {
+    (void)brash::load_case("/nonexistent/brash_missing_case.yaml");
+    ADD_FAILURE();
+  } catch (const brash::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("brash_missing_case.yaml"), std::string::npos);
+  }
+}
