@@ -1,0 +1,222 @@
+// fix icefluid: LIGGGHTS glue around brash_core. Only translation lives here; the physics is in
+// plugin/core (evaluate / advance). See fix_icefluid.h for the command syntax.
+#include "fix_icefluid.h"
+
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+#include "atom.h"
+#include "error.h"
+#include "memory.h"
+#include "modify.h"
+#include "update.h"
+
+#include "brash/core/fluid.hpp"
+#include "brash/error.hpp"
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+namespace core = brash::core;
+
+namespace brash::liggghts {
+namespace {
+
+double to_number(Error* error, const char* keyword, const char* text) {
+  char* end = nullptr;
+  const double v = std::strtod(text, &end);
+  if (end == text || *end != '\0') {
+    const std::string msg = std::string("fix icefluid: keyword '") + keyword + "' expects a number, got '" + text + "'";
+    error->all(FLERR, msg.c_str());
+  }
+  return v;
+}
+
+}  // namespace
+
+FixIceFluid::FixIceFluid(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) {
+  if (!atom->radius_flag || !atom->rmass_flag)
+    error->all(FLERR, "fix icefluid requires per-atom radius and mass (atom_style granular/sphere)");
+  parse(narg, arg);
+
+  peratom_flag = 1;
+  size_peratom_cols = kOutputSize;
+  peratom_freq = 1;
+  restart_peratom = 1;
+  create_attribute = 1;
+
+  grow_arrays(atom->nmax);
+  atom->add_callback(0);  // grow/copy/exchange
+  atom->add_callback(1);  // restart
+  for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
+}
+
+FixIceFluid::~FixIceFluid() {
+  atom->delete_callback(id, 0);
+  atom->delete_callback(id, 1);
+  memory->destroy(state_);
+  memory->destroy(output_);
+}
+
+void FixIceFluid::parse(int narg, char** arg) {
+  try {
+    for (int iarg = 3; iarg < narg;) {
+      const std::string key = arg[iarg];
+      auto need = [&](int n) {
+        if (iarg + n >= narg) {
+          const std::string msg = "fix icefluid: keyword '" + key + "' needs " + std::to_string(n) + " value(s)";
+          error->all(FLERR, msg.c_str());
+        }
+      };
+      auto num = [&](int k) { return to_number(error, key.c_str(), arg[iarg + k]); };
+      if (key == "model") {
+        need(1), params_.model = core::parse_fluid_model(arg[iarg + 1]), iarg += 2;
+      } else if (key == "treatment") {
+        need(1), params_.treatment = core::parse_treatment(arg[iarg + 1]), iarg += 2;
+      } else if (key == "cd") {
+        need(1), params_.drag_coefficient = num(1), iarg += 2;
+      } else if (key == "drag_law") {
+        need(1), params_.drag_law = core::parse_drag_law(arg[iarg + 1]), iarg += 2;
+      } else if (key == "nu") {
+        need(1), params_.kinematic_viscosity_m2_s = num(1), iarg += 2;
+      } else if (key == "ca") {
+        need(1);
+        if (std::strcmp(arg[iarg + 1], "uniform") == 0) {
+          need(2), params_.ca = core::CaTable::uniform(num(2)), iarg += 3;
+        } else {
+          params_.ca = core::parse_ca_table(arg[iarg + 1]), iarg += 2;
+        }
+      } else if (key == "water_level") {
+        need(1), params_.water_level_m = num(1), iarg += 2;
+      } else if (key == "water_density") {
+        need(1), params_.water_density_kg_m3 = num(1), iarg += 2;
+      } else if (key == "flow") {
+        need(3), params_.flow_velocity_m_s = core::Vec3(num(1), num(2), num(3)), iarg += 4;
+      } else if (key == "g") {
+        need(1), params_.gravity_m_s2 = num(1), iarg += 2;
+      } else if (key == "gravity") {
+        need(1);
+        const std::string v = arg[iarg + 1];
+        if (v != "yes" && v != "no") error->all(FLERR, "fix icefluid: keyword 'gravity' expects yes or no");
+        params_.apply_gravity = v == "yes", iarg += 2;
+      } else {
+        const std::string msg = "fix icefluid: unknown keyword '" + key +
+                                "' (expected model, treatment, cd, drag_law, nu, ca, water_level, "
+                                "water_density, flow, g, gravity)";
+        error->all(FLERR, msg.c_str());
+      }
+    }
+    params_.validate("fix icefluid");
+  } catch (const brash::InputError& e) {
+    error->all(FLERR, e.what());
+  }
+}
+
+int FixIceFluid::setmask() { return POST_FORCE; }
+
+void FixIceFluid::init() {
+  // Implicit added mass scales the sum of all other forces: nothing may add force after us.
+  const int me = modify->find_fix(id);
+  for (int i = me + 1; i < modify->nfix; i++) {
+    if (modify->fmask[i] & POST_FORCE) {
+      const std::string msg = std::string("fix icefluid must be the last post_force fix, but fix ") +
+                              modify->fix[i]->id + " (" + modify->fix[i]->style +
+                              ") comes after it: define fix icefluid last";
+      error->all(FLERR, msg.c_str());
+    }
+  }
+  if (std::strstr(update->integrate_style, "respa")) error->all(FLERR, "fix icefluid does not support run_style respa");
+  if (params_.apply_gravity && modify->find_fix_style("gravity", 0))
+    error->all(FLERR, "fix icefluid: 'gravity yes' together with fix gravity would apply gravity twice");
+}
+
+void FixIceFluid::setup(int) {
+  // Forces at the start of a run feed the first half kick. A sphere with history (continued run or
+  // restart) reuses the fluid force and scale of its last evaluation at this same position, so a
+  // restarted run continues exactly like an uninterrupted one.
+  compute(true);
+}
+
+void FixIceFluid::post_force(int) { compute(false); }
+
+void FixIceFluid::compute(bool reuse_last) {
+  double** x = atom->x;
+  double** v = atom->v;
+  double** f = atom->f;
+  const double* radius = atom->radius;
+  const double* rmass = atom->rmass;
+  const int* mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const double dt = update->dt;
+
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    double* st = state_[i];
+    double* out = output_[i];
+    if (reuse_last && st[3] != 0.0) {
+      for (int k = 0; k < 3; k++) f[i][k] = (f[i][k] + st[4 + k]) * st[7 + k];
+      continue;
+    }
+    const core::FluidState state{core::Vec3(st[0], st[1], st[2]), st[3] != 0.0};
+    const core::Sphere sphere{radius[i], rmass[i], core::Vec3(x[i][0], x[i][1], x[i][2]),
+                              core::Vec3(v[i][0], v[i][1], v[i][2])};
+    const core::FluidOutput r = core::evaluate(params_, sphere, state, dt);
+    for (int k = 0; k < 3; k++) {
+      f[i][k] = (f[i][k] + r.force_N[k]) * r.scale[k];
+      st[k] = v[i][k];
+      st[4 + k] = r.force_N[k];
+      st[7 + k] = r.scale[k];
+    }
+    st[3] = 1.0;
+    out[0] = r.immersion.fraction;
+    out[1] = r.ca.x();
+    out[2] = r.ca.y();
+    out[3] = r.ca.z();
+  }
+}
+
+void FixIceFluid::grow_arrays(int nmax) {
+  memory->grow(state_, nmax, kStateSize, "icefluid:state");
+  memory->grow(output_, nmax, kOutputSize, "icefluid:output");
+  array_atom = output_;
+}
+
+void FixIceFluid::copy_arrays(int i, int j, int) {
+  for (int k = 0; k < kStateSize; k++) state_[j][k] = state_[i][k];
+  for (int k = 0; k < kOutputSize; k++) output_[j][k] = output_[i][k];
+}
+
+void FixIceFluid::set_arrays(int i) {
+  for (int k = 0; k < kStateSize; k++) state_[i][k] = 0.0;
+  for (int k = 0; k < kOutputSize; k++) output_[i][k] = 0.0;
+}
+
+int FixIceFluid::pack_exchange(int i, double* buf) {
+  for (int k = 0; k < kStateSize; k++) buf[k] = state_[i][k];
+  for (int k = 0; k < kOutputSize; k++) buf[kStateSize + k] = output_[i][k];
+  return kStateSize + kOutputSize;
+}
+
+int FixIceFluid::unpack_exchange(int nlocal, double* buf) {
+  for (int k = 0; k < kStateSize; k++) state_[nlocal][k] = buf[k];
+  for (int k = 0; k < kOutputSize; k++) output_[nlocal][k] = buf[kStateSize + k];
+  return kStateSize + kOutputSize;
+}
+
+int FixIceFluid::pack_restart(int i, double* buf) {
+  buf[0] = kStateSize + 1;
+  for (int k = 0; k < kStateSize; k++) buf[1 + k] = state_[i][k];
+  return kStateSize + 1;
+}
+
+void FixIceFluid::unpack_restart(int nlocal, int nth) {
+  double** extra = atom->extra;
+  int m = 0;  // skip the blocks of the fixes stored before this one; each starts with its length
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  m++;
+  for (int k = 0; k < kStateSize; k++) state_[nlocal][k] = extra[nlocal][m++];
+}
+
+double FixIceFluid::memory_usage() { return double(atom->nmax) * (kStateSize + kOutputSize) * sizeof(double); }
+
+}  // namespace brash::liggghts

@@ -1,0 +1,67 @@
+/* fix icefluid: fluid forces on floating ice spheres (buoyancy, drag, added mass) from brash_core.
+
+   fix ID group-ID icefluid keyword value ...
+
+   keywords (all optional; defaults in brackets):
+     model        drag | added_mass | both                 [added_mass]
+     treatment    implicit | explicit                      [implicit]
+     cd           drag coefficient C_D                      [0.44]
+     drag_law     constant | schiller_naumann              [constant]
+     nu           kinematic viscosity (m^2/s)              [1.79e-6]
+     ca           table1 | text | uniform VALUE            [table1]
+     water_level  z of the free surface (m)                [0]
+     water_density rho_w (kg/m^3)                          [1000]
+     flow         vx vy vz, flow velocity (m/s)            [0 0 0]
+     g            gravity magnitude for buoyancy (m/s^2)   [9.81]
+     gravity      no | yes: also apply -m g here (then do not use fix gravity)  [no]
+
+   Must be the last POST_FORCE fix (checked at init): the implicit treatment scales the sum of every
+   other force. Per-atom output (dump f_ID[1..4]): submerged fraction, Ca_x, Ca_y, Ca_z.
+   Doc: plugin/liggghts/doc/fix_icefluid.txt
+*/
+#pragma once
+
+#include "fix.h"
+
+#include "brash/core/params.hpp"
+
+namespace brash::liggghts {
+
+class FixIceFluid : public LAMMPS_NS::Fix {
+ public:
+  FixIceFluid(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg);
+  ~FixIceFluid() override;
+
+  int setmask() override;
+  void init() override;
+  void setup(int vflag) override;
+  void post_force(int vflag) override;
+
+  void grow_arrays(int nmax) override;
+  void copy_arrays(int i, int j, int delflag) override;
+  void set_arrays(int i) override;
+  int pack_exchange(int i, double* buf) override;
+  int unpack_exchange(int nlocal, double* buf) override;
+  int pack_restart(int i, double* buf) override;
+  void unpack_restart(int nlocal, int nth) override;
+  int size_restart(int) override { return kStateSize + 1; }
+  int maxsize_restart() override { return kStateSize + 1; }
+  double memory_usage();
+
+  const brash::core::FluidParams& params() const { return params_; }
+
+ private:
+  // Per-atom state carried across steps, migration and restart:
+  // [0..2] velocity at the last evaluation, [3] has_prev, [4..6] last fluid force, [7..9] last scale.
+  static constexpr int kStateSize = 10;
+  static constexpr int kOutputSize = 4;  // submerged fraction, Ca x, y, z
+
+  void compute(bool reuse_last);
+  void parse(int narg, char** arg);
+
+  brash::core::FluidParams params_;
+  double** state_ = nullptr;
+  double** output_ = nullptr;
+};
+
+}  // namespace brash::liggghts
