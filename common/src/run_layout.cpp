@@ -1,0 +1,56 @@
+// Run directory helpers (see run_layout.hpp).
+#include "brash/run_layout.hpp"
+
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <unistd.h>
+
+#include <fmt/chrono.h>
+#include <fmt/format.h>
+
+#include "brash/error.hpp"
+
+namespace brash::run {
+
+void write_atomic(const std::filesystem::path& file, const std::string& content) {
+  const auto tmp = file.parent_path() / (file.filename().string() + fmt::format(".tmp{}", ::getpid()));
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    out << content;
+    out.flush();
+    if (!out) throw InputError(fmt::format("{}: cannot write (disk full or no permission?)", tmp.string()));
+  }
+  std::filesystem::rename(tmp, file);
+}
+
+std::filesystem::path make_run_dir(const std::filesystem::path& runs_root, const std::string& case_name,
+                                   const std::string& engine, const std::string& fluid_model) {
+  const auto now = std::chrono::system_clock::now();
+  const std::string stamp = fmt::format("{:%Y%m%dT%H%M%S}", std::chrono::floor<std::chrono::seconds>(now));
+  auto dir = runs_root / fmt::format("{}-{}-{}-{}", case_name, engine, fluid_model, stamp);
+  for (int k = 2; std::filesystem::exists(dir); ++k)
+    dir = runs_root / fmt::format("{}-{}-{}-{}-{}", case_name, engine, fluid_model, stamp, k);
+  std::filesystem::create_directories(dir / "particles");
+  std::filesystem::create_directories(dir / "restart");
+  return dir;
+}
+
+void write_meta(const std::filesystem::path& run_dir, const nlohmann::json& meta) {
+  write_atomic(run_dir / "meta.json", meta.dump(2) + "\n");
+}
+
+std::string git_commit() {
+  const std::string cmd = std::string("git -C '") + BRASH_SOURCE_DIR + "' rev-parse HEAD 2>/dev/null";
+  std::array<char, 128> buf{};
+  std::string out;
+  if (FILE* p = ::popen(cmd.c_str(), "r")) {
+    while (std::fgets(buf.data(), buf.size(), p)) out += buf.data();
+    ::pclose(p);
+  }
+  while (!out.empty() && (out.back() == '\n' || out.back() == ' ')) out.pop_back();
+  return out.empty() ? "unknown" : out;
+}
+
+}  // namespace brash::run
