@@ -1,0 +1,55 @@
+// FSICR channel resistance R_CH (Finnish-Swedish Ice Class Rules, "engine output" chapter).
+// Formula, constants and confidence tags: ../shared/notes/fsicr.md. Every constant lives in
+// FsicrConstants so a corrected rule text changes one place.
+#pragma once
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <brash/fsicr_params.hpp>
+
+namespace brash::post {
+
+enum class IceClass { IA_super, IA, IB, IC };
+
+// "IA_super" (also "IAS", "IA Super"), "IA", "IB", "IC"; InputError otherwise.
+IceClass parse_ice_class(std::string_view text);
+std::string to_string(IceClass c);
+// Thickness of the brash ice in the channel: 1.0 m (IA Super, IA), 0.8 m (IB), 0.6 m (IC).
+double brash_thickness_HM_m(IceClass c);
+
+struct FsicrConstants {
+  double C3 = 845.0;  // kg/(m^2 s^2)  [P]
+  double C4 = 42.0;   // kg/(m^2 s^2)  [P]
+  double C5 = 825.0;  // kg/s^2        [U]
+  double Cmu_min = 0.45;
+  double Cpsi_slope = 0.047, Cpsi_offset = 2.115, Cpsi_zero_below_psi_deg = 45.0;
+  double HF_offset_m = 0.26;
+  double LTB3_min = 5.0, LTB3_max = 20.0;  // clamp of (L T / B^2)^3
+  // IA Super only (C1, C2; 0.1 m consolidated layer)  [U]
+  double f1 = 23.0, f2 = 45.8, f3 = 14.7, f4 = 29.0;
+  double g1 = 1530.0, g2 = 170.0, g3 = 400.0;
+};
+
+struct FsicrResult {
+  double H_M_m = 0, H_F_m = 0;
+  double psi_deg = 0, Cmu = 0, Cpsi = 0;
+  double LTB3_raw = 0, LTB3_used = 0;  // (L T / B^2)^3 before and after clamping
+  double C1_N = 0, C2_N = 0;
+  double R_CH_N = 0;
+};
+
+// psi = atan(tan(phi2) / sin(alpha)) in degrees (90 when phi2 = 90).
+double fsicr_psi_deg(double alpha_deg, double phi2_deg);
+
+// R_CH and its intermediates. p.psi_deg is ignored (recomputed from alpha, phi2).
+FsicrResult fsicr_channel_resistance(const FsicrParams& p, IceClass ice_class,
+                                     const FsicrConstants& k = {});
+
+// Human-readable warnings for parameters outside the formula's validity range.
+std::vector<std::string> fsicr_validity_warnings(const FsicrParams& p);
+
+// Required propulsion power P = K_e (R_CH/1000)^1.5 / D_P in kW (reports only).
+double fsicr_power_kW(double R_CH_N, double K_e, double propeller_diameter_m);
+
+}  // namespace brash::post

@@ -1,0 +1,84 @@
+// Analysis of one run directory -> report.json / report.md content. Pure apart from reading the run.
+#pragma once
+#include <array>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include <brash/fsicr_params.hpp>
+#include <brash/post/blocking.hpp>
+#include <brash/post/force_history.hpp>
+#include <brash/post/fsicr.hpp>
+#include <brash/post/post_case.hpp>
+#include <brash/post/run_meta.hpp>
+
+namespace brash::post {
+
+// Paper values (Kogakuin; physics.md) shown beside ours, never used in computations.
+struct PaperValues {
+  static constexpr double added_mass_full_kN = 393.0;
+  static constexpr double drag_full_kN = 378.0;
+  static constexpr double fsicr_R_CH_kN = 999.0;
+};
+
+struct WindowSelection {
+  std::array<double, 2> requested_s{};
+  std::array<double, 2> used_s{};
+  std::size_t i0 = 0, i1 = 0;   // samples [i0, i1) of the history
+  bool truncated = false;       // the record ends before the requested window end
+  bool fallback = false;        // no sample inside the window: last half of the record used
+};
+
+// Samples with t in [t0, t1]. Record shorter than t1: truncated window. No sample >= t0: the last
+// half of the record is used instead (fallback, flagged). Needs >= 2 samples (InputError otherwise).
+WindowSelection select_window(std::span<const double> t_s, std::array<double, 2> window_s,
+                              const std::filesystem::path& source);
+
+struct FsicrSummary {
+  std::string ice_class;
+  FsicrParams params;                          // full scale, psi recomputed
+  std::map<std::string, std::string> source;   // per parameter: measured | override | case | missing
+  std::optional<FsicrResult> result;           // empty if a parameter is missing
+  std::vector<std::string> warnings;
+};
+
+// Model-scale hull parameters (as measured on the STL) to full scale: lengths * lambda, areas * lambda^2.
+FsicrParams to_full_scale(const FsicrParams& model, double lambda);
+
+// Combines measured full-scale parameters (may be absent), the case's main dimensions and the case's
+// fsicr: overrides, then evaluates R_CH. Pure.
+FsicrSummary resolve_fsicr(const PostCase& c, const std::optional<FsicrParams>& measured_full_scale);
+
+// Measures the case hull with brash_hull when it is built in; empty (with a note) otherwise.
+std::optional<FsicrParams> measure_case_hull_full_scale(const PostCase& c, std::vector<std::string>& notes);
+
+struct RunAnalysis {
+  std::filesystem::path run_dir;
+  RunMeta meta;
+  PostCase case_;
+  ForceHistory force;
+  WindowSelection window;
+  BlockingResult resistance;  // of -fx, model scale [N]
+  BlockingResult fx, fy, fz;  // force components of the ice on the hull [N]
+  double resistance_full_kN = 0, resistance_full_ci95_kN = 0;
+  FsicrSummary fsicr;
+  std::optional<double> ratio_fsicr_to_sim;
+  std::vector<std::string> notes;  // everything a reader must know (truncation, fallbacks, ...)
+};
+
+RunAnalysis analyze_run(const std::filesystem::path& run_dir);
+
+nlohmann::ordered_json report_json(const RunAnalysis& a);
+std::string report_markdown(const RunAnalysis& a);
+
+// Window-sample CSV: t_s,fx_N,fy_N,fz_N,resistance_N,in_window (for spreadsheets and plots).
+std::string force_history_csv(const RunAnalysis& a);
+// Blocking levels (for checking the plateau by eye).
+std::string blocking_csv(const BlockingResult& b);
+
+}  // namespace brash::post

@@ -1,0 +1,21 @@
+// meta.json of a run (written by every engine runner; see docs/case_format.md).
+#pragma once
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace brash::post {
+
+struct RunMeta {
+  std::string engine = "unknown", engine_version, fluid_model, treatment, git_commit;
+  std::string status = "unknown";  // running | complete | failed
+  std::string reason;
+  std::optional<double> dt_s, wall_time_s, particle_steps;
+  std::optional<long long> ranks, particles;
+  bool in_progress() const { return status == "running"; }
+};
+
+// InputError (file + parser line/column) for invalid JSON or wrongly typed keys.
+RunMeta read_run_meta(const std::filesystem::path& path);
+
+}  // namespace brash::post

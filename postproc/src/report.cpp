@@ -1,0 +1,280 @@
+// One run directory -> analysis -> report.json / report.md / CSV text.
+#include <brash/post/report.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+#include <fmt/format.h>
+
+#include <brash/error.hpp>
+
+namespace brash::post {
+namespace {
+
+std::vector<double> slice(const std::vector<double>& v, std::size_t i0, std::size_t i1) {
+  return {v.begin() + static_cast<std::ptrdiff_t>(i0), v.begin() + static_cast<std::ptrdiff_t>(i1)};
+}
+
+std::vector<double> negated(std::vector<double> v) {
+  for (auto& x : v) x = -x;
+  return v;
+}
+
+// FsicrParams fields by name, so overrides and sources are handled by one loop.
+using Field = double FsicrParams::*;
+const std::vector<std::pair<std::string, Field>>& fsicr_fields() {
+  static const std::vector<std::pair<std::string, Field>> f{
+      {"L_m", &FsicrParams::L_m},         {"B_m", &FsicrParams::B_m},
+      {"T_m", &FsicrParams::T_m},         {"alpha_deg", &FsicrParams::alpha_deg},
+      {"phi1_deg", &FsicrParams::phi1_deg}, {"phi2_deg", &FsicrParams::phi2_deg},
+      {"L_par_m", &FsicrParams::L_par_m}, {"L_bow_m", &FsicrParams::L_bow_m},
+      {"A_wf_m2", &FsicrParams::A_wf_m2}};
+  return f;
+}
+
+nlohmann::ordered_json blocking_json(const BlockingResult& b) {
+  const auto& L = b.levels[b.level];
+  return {{"mean", b.mean}, {"ci95", b.ci95}, {"sem", b.sem}, {"samples", b.n_samples},
+          {"block_size", L.block_size}, {"n_blocks", L.n_blocks}, {"correction", b.correction}, {"plateau_found", b.plateau_found}};
+}
+
+nlohmann::ordered_json opt(const std::optional<double>& v) { return v ? nlohmann::ordered_json(*v) : nullptr; }
+
+}  // namespace
+
+WindowSelection select_window(std::span<const double> t, std::array<double, 2> w, const std::filesystem::path& source) {
+  if (t.size() < 2)
+    throw InputError(fmt::format("{}: {} complete record(s), need at least 2 to average", source.string(), t.size()));
+  WindowSelection s;
+  s.requested_s = w;
+  const auto lo = std::lower_bound(t.begin(), t.end(), w[0]);
+  const auto hi = std::upper_bound(t.begin(), t.end(), w[1]);
+  s.i0 = static_cast<std::size_t>(lo - t.begin());
+  s.i1 = static_cast<std::size_t>(hi - t.begin());
+  s.truncated = t.back() < w[1];
+  if (s.i1 < s.i0 + 2) {  // nothing usable inside the window: take the last half of the record
+    s.fallback = true;
+    s.i1 = t.size();
+    s.i0 = t.size() / 2;
+  }
+  s.used_s = {t[s.i0], t[s.i1 - 1]};
+  return s;
+}
+
+FsicrParams to_full_scale(const FsicrParams& m, double lambda) {
+  FsicrParams f = m;
+  f.L_m *= lambda;
+  f.B_m *= lambda;
+  f.T_m *= lambda;
+  f.L_par_m *= lambda;
+  f.L_bow_m *= lambda;
+  f.A_wf_m2 *= lambda * lambda;
+  return f;
+}
+
+FsicrSummary resolve_fsicr(const PostCase& c, const std::optional<FsicrParams>& measured) {
+  FsicrSummary s;
+  s.ice_class = c.ice_class;
+  for (const auto& [name, field] : fsicr_fields()) {
+    if (measured) {
+      s.params.*field = (*measured).*field;
+      s.source[name] = "measured";
+    } else {
+      s.source[name] = "missing";
+    }
+  }
+  if (!measured) {  // main dimensions are known from the case even without the hull tool
+    const double lam = c.scale_lambda;
+    const std::vector<std::pair<std::string, double>> dims{
+        {"L_m", c.lpp_m * lam}, {"B_m", c.beam_m * lam}, {"T_m", c.draft_m * lam}};
+    for (const auto& [name, v] : dims)
+      if (v > 0) {
+        for (const auto& [n2, field] : fsicr_fields())
+          if (n2 == name) s.params.*field = v;
+        s.source[name] = "case";
+      }
+    s.params.phi1_deg = 90;  // bulbous bow convention of the rules; only IA Super uses it
+    s.source["phi1_deg"] = "default (bulbous bow)";
+  }
+  for (const auto& [name, v] : c.fsicr_overrides)
+    for (const auto& [n2, field] : fsicr_fields())
+      if (n2 == name) {
+        s.params.*field = v;
+        s.source[name] = "override";
+      }
+  s.params.psi_deg = fsicr_psi_deg(s.params.alpha_deg, s.params.phi2_deg);
+  std::vector<std::string> missing;
+  for (const auto& [name, src] : s.source)
+    if (src == "missing") missing.push_back(name);
+  IceClass ic = IceClass::IA;
+  try {
+    ic = parse_ice_class(c.ice_class);
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}: ship.ice_class: {}", c.file.string(), e.what()));
+  }
+  if (!missing.empty()) {
+    s.warnings.push_back(fmt::format("R_CH not computed: missing hull parameter(s) {} (no hull measurement; set them in the case's fsicr: section)",
+                                     fmt::join(missing, ", ")));
+    return s;
+  }
+  s.result = fsicr_channel_resistance(s.params, ic);
+  s.warnings = fsicr_validity_warnings(s.params);
+  return s;
+}
+
+RunAnalysis analyze_run(const std::filesystem::path& run_dir) {
+  RunAnalysis a;
+  a.run_dir = run_dir;
+  a.meta = read_run_meta(run_dir / "meta.json");
+  a.case_ = read_post_case(run_dir / "case.yaml");
+  const auto force_path = run_dir / "hull_force.csv";
+  a.force = read_force_history(force_path, a.meta.in_progress());
+
+  if (a.meta.in_progress())
+    a.notes.push_back("run still in progress (meta.json status 'running'): every number is provisional");
+  if (a.meta.status == "failed")
+    a.notes.push_back(fmt::format("run FAILED (meta.json reason: '{}'): numbers cover the record written before the failure", a.meta.reason));
+  if (a.force.tail_dropped)
+    a.notes.push_back(fmt::format("hull_force.csv: last line incomplete (no newline, run still being written): ignored; {} complete records used",
+                                  a.force.t_s.size()));
+
+  a.window = select_window(a.force.t_s, a.case_.window_s, force_path);
+  const auto& w = a.window;
+  if (w.fallback)
+    a.notes.push_back(fmt::format("record ends at t = {:.3f} s, before the averaging window [{}, {}] s starts: "
+                                  "the last half of the record [{:.3f}, {:.3f}] s is averaged instead (NOT the paper's window)",
+                                  a.force.t_s.back(), w.requested_s[0], w.requested_s[1], w.used_s[0], w.used_s[1]));
+  else if (w.truncated)
+    a.notes.push_back(fmt::format("record ends at t = {:.3f} s, before the window end {} s: window shortened to [{:.3f}, {:.3f}] s",
+                                  a.force.t_s.back(), w.requested_s[1], w.used_s[0], w.used_s[1]));
+
+  a.fx = block_average(slice(a.force.fx_N, w.i0, w.i1));
+  a.fy = block_average(slice(a.force.fy_N, w.i0, w.i1));
+  a.fz = block_average(slice(a.force.fz_N, w.i0, w.i1));
+  a.resistance = block_average(negated(slice(a.force.fx_N, w.i0, w.i1)));
+  if (!a.resistance.plateau_found)
+    a.notes.push_back("block averaging found no plateau of the variance of the mean: the CI95 is a lower bound "
+                      "(window too short for the signal's correlation time)");
+
+  const double lam3 = std::pow(a.case_.scale_lambda, 3);
+  a.resistance_full_kN = a.resistance.mean * lam3 / 1000.0;
+  a.resistance_full_ci95_kN = a.resistance.ci95 * lam3 / 1000.0;
+
+  const auto measured = measure_case_hull_full_scale(a.case_, a.notes);
+  a.fsicr = resolve_fsicr(a.case_, measured);
+  if (a.fsicr.result && a.resistance_full_kN > 0)
+    a.ratio_fsicr_to_sim = a.fsicr.result->R_CH_N / 1000.0 / a.resistance_full_kN;
+  return a;
+}
+
+nlohmann::ordered_json report_json(const RunAnalysis& a) {
+  using J = nlohmann::ordered_json;
+  J params = J::object();
+  for (const auto& [name, field] : fsicr_fields()) params[name] = a.fsicr.params.*field;
+  params["psi_deg"] = a.fsicr.params.psi_deg;
+  J fsicr{{"ice_class", a.fsicr.ice_class}, {"params", params}, {"source", a.fsicr.source}};
+  if (const auto& r = a.fsicr.result) {
+    fsicr["R_CH_kN"] = r->R_CH_N / 1000.0;
+    fsicr["intermediate"] = {{"H_M_m", r->H_M_m}, {"H_F_m", r->H_F_m}, {"psi_deg", r->psi_deg},
+                             {"Cmu", r->Cmu}, {"Cpsi", r->Cpsi}, {"LTB2_cubed_raw", r->LTB3_raw},
+                             {"LTB2_cubed_used", r->LTB3_used}, {"C1_N", r->C1_N}, {"C2_N", r->C2_N}};
+  } else {
+    fsicr["R_CH_kN"] = nullptr;
+  }
+  fsicr["warnings"] = a.fsicr.warnings;
+  fsicr["paper_R_CH_kN"] = PaperValues::fsicr_R_CH_kN;
+
+  const auto& w = a.window;
+  J j;
+  j["engine"] = a.meta.engine;
+  j["engine_version"] = a.meta.engine_version;
+  j["fluid_model"] = a.meta.fluid_model.empty() ? a.case_.fluid_model : a.meta.fluid_model;
+  j["treatment"] = a.meta.treatment;
+  j["case"] = a.case_.name;
+  j["status"] = a.meta.status;
+  j["complete"] = a.meta.status == "complete" && !a.force.tail_dropped && !w.truncated && !w.fallback;
+  j["speed_m_s"] = a.case_.speed_m_s;
+  j["window_s"] = {w.used_s[0], w.used_s[1]};
+  j["window_requested_s"] = {w.requested_s[0], w.requested_s[1]};
+  j["window_truncated"] = w.truncated;
+  j["window_fallback"] = w.fallback;
+  j["record"] = {{"samples", a.force.t_s.size()}, {"t_first_s", a.force.t_s.front()},
+                 {"t_last_s", a.force.t_s.back()}, {"incomplete_tail_dropped", a.force.tail_dropped}};
+  j["resistance_model_N"] = {{"mean", a.resistance.mean}, {"ci95", a.resistance.ci95},
+                             {"x", a.fx.mean}, {"y", a.fy.mean}, {"z", a.fz.mean},
+                             {"ci95_xyz", {a.fx.ci95, a.fy.ci95, a.fz.ci95}},
+                             {"blocking", blocking_json(a.resistance)}};
+  j["lambda"] = a.case_.scale_lambda;
+  j["resistance_full_kN"] = a.resistance_full_kN;
+  j["resistance_full_ci95_kN"] = a.resistance_full_ci95_kN;
+  j["fsicr"] = fsicr;
+  j["ratio_fsicr_to_sim"] = opt(a.ratio_fsicr_to_sim);
+  j["wall_time_s"] = opt(a.meta.wall_time_s);
+  j["particle_steps"] = opt(a.meta.particle_steps);
+  j["paper_full_kN"] = {{"added_mass", PaperValues::added_mass_full_kN}, {"drag", PaperValues::drag_full_kN}};
+  j["notes"] = a.notes;
+  return j;
+}
+
+std::string report_markdown(const RunAnalysis& a) {
+  const auto& w = a.window;
+  const auto fluid = a.meta.fluid_model.empty() ? a.case_.fluid_model : a.meta.fluid_model;
+  std::string md = fmt::format("# brash run report: {}\n\n", a.run_dir.filename().string());
+  if (!a.notes.empty()) {
+    md += "## Read first\n\n";
+    for (const auto& n : a.notes) md += fmt::format("- **{}**\n", n);
+    md += "\n";
+  }
+  md += fmt::format("| item | value |\n|---|---|\n| case | {} |\n| engine | {} {} |\n| fluid model / treatment | {} / {} |\n"
+                    "| status | {} |\n| ship speed | {} m/s (model) |\n| scale lambda | {} |\n",
+                    a.case_.name, a.meta.engine, a.meta.engine_version, fluid, a.meta.treatment, a.meta.status,
+                    a.case_.speed_m_s, a.case_.scale_lambda);
+  md += fmt::format("| averaging window | [{:.3f}, {:.3f}] s (requested [{}, {}] s){} |\n", w.used_s[0], w.used_s[1],
+                    w.requested_s[0], w.requested_s[1], w.fallback ? " FALLBACK" : (w.truncated ? " TRUNCATED" : ""));
+  md += fmt::format("| wall time | {} |\n| particle steps | {} |\n\n",
+                    a.meta.wall_time_s ? fmt::format("{:.1f} s", *a.meta.wall_time_s) : "n/a",
+                    a.meta.particle_steps ? fmt::format("{:.4g}", *a.meta.particle_steps) : "n/a");
+  const auto& L = a.resistance.levels[a.resistance.level];
+  md += "## Resistance (resistance = -fx, force of the ice on the hull, contacts only)\n\n";
+  md += fmt::format("| quantity | model scale | full scale |\n|---|---|---|\n"
+                    "| mean resistance | {:.4f} ± {:.4f} N | {:.1f} ± {:.1f} kN |\n"
+                    "| mean force x, y, z | {:.4f}, {:.4f}, {:.4f} N | |\n\n",
+                    a.resistance.mean, a.resistance.ci95, a.resistance_full_kN, a.resistance_full_ci95_kN,
+                    a.fx.mean, a.fy.mean, a.fz.mean);
+  md += fmt::format("± is the 95 % interval from block averaging (blocks of {} samples, {} blocks, plateau {}). "
+                    "Full scale = model * lambda^3. Paper (full scale): added mass 393 kN, drag 378 kN.\n\n",
+                    L.block_size, L.n_blocks, a.resistance.plateau_found ? "found" : "NOT found");
+  md += fmt::format("## FSICR channel resistance (ice class {})\n\n| parameter | value | source |\n|---|---|---|\n", a.fsicr.ice_class);
+  for (const auto& [name, field] : fsicr_fields())
+    md += fmt::format("| {} | {:.4g} | {} |\n", name, a.fsicr.params.*field, a.fsicr.source.at(name));
+  md += fmt::format("| psi_deg | {:.4g} | computed |\n\n", a.fsicr.params.psi_deg);
+  if (const auto& r = a.fsicr.result)
+    md += fmt::format("R_CH = **{:.1f} kN** (H_F {:.3f} m, H_M {:.1f} m, Cmu {:.4f}, Cpsi {:.4f}, (LT/B^2)^3 {:.2f} used {:.2f}). "
+                      "Paper: 999 kN (its hull parameters are not published).\n\n",
+                      r->R_CH_N / 1000, r->H_F_m, r->H_M_m, r->Cmu, r->Cpsi, r->LTB3_raw, r->LTB3_used);
+  for (const auto& wmsg : a.fsicr.warnings) md += fmt::format("- warning: {}\n", wmsg);
+  md += "\n";
+  if (a.ratio_fsicr_to_sim) md += fmt::format("FSICR / simulation = **{:.2f}** (paper: 2.54).\n", *a.ratio_fsicr_to_sim);
+  return md;
+}
+
+std::string force_history_csv(const RunAnalysis& a) {
+  std::string s = "t_s,fx_N,fy_N,fz_N,resistance_N,in_window\n";
+  const auto& f = a.force;
+  for (std::size_t i = 0; i < f.t_s.size(); ++i)
+    s += fmt::format("{},{},{},{},{},{}\n", f.t_s[i], f.fx_N[i], f.fy_N[i], f.fz_N[i], -f.fx_N[i],
+                     (i >= a.window.i0 && i < a.window.i1) ? 1 : 0);
+  return s;
+}
+
+std::string blocking_csv(const BlockingResult& b) {
+  std::string s = "level,block_size,n_blocks,var_of_mean,var_error,lag1_corr,chosen\n";
+  for (std::size_t k = 0; k < b.levels.size(); ++k) {
+    const auto& L = b.levels[k];
+    s += fmt::format("{},{},{},{},{},{},{}\n", k, L.block_size, L.n_blocks, L.var_of_mean, L.var_error, L.lag1_corr, k == b.level ? 1 : 0);
+  }
+  return s;
+}
+
+}  // namespace brash::post

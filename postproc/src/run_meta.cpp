@@ -1,0 +1,54 @@
+// meta.json reader.
+#include <brash/post/run_meta.hpp>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <brash/error.hpp>
+#include <brash/post/csv.hpp>
+
+namespace brash::post {
+namespace {
+
+template <class T> struct Unwrap { using type = T; };
+template <class T> struct Unwrap<std::optional<T>> { using type = T; };
+
+template <class T>
+void take(const nlohmann::json& j, const char* key, T& out, const std::filesystem::path& path) {
+  if (!j.contains(key) || j[key].is_null()) return;
+  try {
+    out = j[key].get<typename Unwrap<T>::type>();
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(fmt::format("{}: key '{}': {}", path.string(), key, e.what()));
+  }
+}
+
+}  // namespace
+
+RunMeta read_run_meta(const std::filesystem::path& path) {
+  const auto text = read_text_file(path);
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    // e.what() carries "line L, column C" of the offending byte.
+    throw InputError(fmt::format("{}: invalid JSON: {}", path.string(), e.what()));
+  }
+  if (!j.is_object()) throw InputError(fmt::format("{}:1: expected a JSON object", path.string()));
+  RunMeta m;
+  take(j, "engine", m.engine, path);
+  take(j, "engine_version", m.engine_version, path);
+  take(j, "fluid_model", m.fluid_model, path);
+  take(j, "treatment", m.treatment, path);
+  take(j, "git_commit", m.git_commit, path);
+  take(j, "status", m.status, path);
+  take(j, "reason", m.reason, path);
+  take(j, "dt_s", m.dt_s, path);
+  take(j, "wall_time_s", m.wall_time_s, path);
+  take(j, "particle_steps", m.particle_steps, path);
+  take(j, "ranks", m.ranks, path);
+  take(j, "particles", m.particles, path);
+  return m;
+}
+
+}  // namespace brash::post

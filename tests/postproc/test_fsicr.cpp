@@ -1,0 +1,121 @@
+// FSICR R_CH: the worked values of ../shared/notes/fsicr.md and every clamping rule.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <brash/error.hpp>
+#include <brash/post/fsicr.hpp>
+
+using namespace brash::post;
+
+namespace {
+
+// The paper's Panamax as in fsicr.md (IA, L_BOW 40 m, A_wf 900 m^2).
+brash::FsicrParams panamax(double alpha, double phi2, double L_par) {
+  brash::FsicrParams p;
+  p.L_m = 199.11;
+  p.B_m = 32;
+  p.T_m = 11.733;
+  p.alpha_deg = alpha;
+  p.phi1_deg = 90;
+  p.phi2_deg = phi2;
+  p.L_par_m = L_par;
+  p.L_bow_m = 40;
+  p.A_wf_m2 = 900;
+  return p;
+}
+
+}  // namespace
+
+TEST(Fsicr, WorkedValue990kN) {
+  const auto r = fsicr_channel_resistance(panamax(25, 60, 100), IceClass::IA);
+  EXPECT_NEAR(r.H_F_m, 5.917, 0.0005);
+  EXPECT_NEAR(r.LTB3_raw, 11.87, 0.005);
+  EXPECT_EQ(r.LTB3_used, r.LTB3_raw);  // not clamped
+  EXPECT_EQ(std::lround(r.R_CH_N / 1000), 990);
+  EXPECT_EQ(r.C1_N, 0);
+  EXPECT_EQ(r.C2_N, 0);
+}
+
+TEST(Fsicr, WorkedValue992kN) {
+  const auto r = fsicr_channel_resistance(panamax(30, 45, 80), IceClass::IA);
+  EXPECT_NEAR(r.H_F_m, 5.917, 0.0005);
+  EXPECT_EQ(std::lround(r.R_CH_N / 1000), 992);
+  EXPECT_NEAR(r.psi_deg, 63.435, 0.001);  // atan(1 / sin 30 deg) = atan(2)
+}
+
+TEST(Fsicr, IceClassSetsHM) {
+  EXPECT_EQ(brash_thickness_HM_m(parse_ice_class("IA_super")), 1.0);
+  EXPECT_EQ(brash_thickness_HM_m(parse_ice_class("IA")), 1.0);
+  EXPECT_EQ(brash_thickness_HM_m(parse_ice_class("IB")), 0.8);
+  EXPECT_EQ(brash_thickness_HM_m(parse_ice_class("ic")), 0.6);
+  EXPECT_THROW(parse_ice_class("PC7"), brash::InputError);
+  const auto r = fsicr_channel_resistance(panamax(25, 60, 100), IceClass::IB);
+  EXPECT_NEAR(r.H_F_m, 0.26 + std::sqrt(0.8 * 32), 1e-12);
+  EXPECT_LT(r.R_CH_N, 990e3);
+}
+
+TEST(Fsicr, CmuClampedAt045) {
+  // alpha 15, phi2 20: 0.15 cos20 + sin(psi) sin15 = 0.141 + 0.2496 = 0.390 < 0.45
+  const auto r = fsicr_channel_resistance(panamax(15, 20, 100), IceClass::IA);
+  EXPECT_NEAR(r.psi_deg, std::atan(std::tan(20 * M_PI / 180) / std::sin(15 * M_PI / 180)) * 180 / M_PI, 1e-9);
+  EXPECT_EQ(r.Cmu, 0.45);
+  // Unclamped case: formula value.
+  const auto u = fsicr_channel_resistance(panamax(30, 45, 80), IceClass::IA);
+  EXPECT_NEAR(u.Cmu, 0.15 * std::cos(M_PI / 4) + std::sin(std::atan(2.0)) * 0.5, 1e-12);
+}
+
+TEST(Fsicr, CpsiZeroAtOrBelow45Deg) {
+  // alpha 90 -> psi = phi2 exactly.
+  auto below = fsicr_channel_resistance(panamax(90, 40, 100), IceClass::IA);
+  EXPECT_NEAR(below.psi_deg, 40, 1e-9);
+  EXPECT_EQ(below.Cpsi, 0);
+  auto at = fsicr_channel_resistance(panamax(90, 45, 100), IceClass::IA);
+  EXPECT_EQ(at.Cpsi, 0);
+  auto above = fsicr_channel_resistance(panamax(90, 50, 100), IceClass::IA);
+  EXPECT_NEAR(above.Cpsi, 0.047 * 50 - 2.115, 1e-9);  // 0.235
+  // phi2 = 90 (vertical): psi = 90, Cpsi = 2.115
+  EXPECT_NEAR(fsicr_psi_deg(25, 90), 90, 1e-9);
+}
+
+TEST(Fsicr, LTB2CubedClampedTo5And20) {
+  auto p = panamax(25, 60, 100);
+  p.T_m = 6;  // (199.11*6/1024)^3 = 1.59 -> 5
+  const auto lo = fsicr_channel_resistance(p, IceClass::IA);
+  EXPECT_NEAR(lo.LTB3_raw, std::pow(199.11 * 6 / 1024, 3), 1e-9);
+  EXPECT_EQ(lo.LTB3_used, 5.0);
+  p.T_m = 15;  // (199.11*15/1024)^3 = 24.9 -> 20
+  const auto hi = fsicr_channel_resistance(p, IceClass::IA);
+  EXPECT_GT(hi.LTB3_raw, 20);
+  EXPECT_EQ(hi.LTB3_used, 20.0);
+  // The term enters linearly: C5 * 20 * A_wf / L.
+  const auto base = fsicr_channel_resistance(panamax(25, 60, 100), IceClass::IA);
+  EXPECT_GT(hi.R_CH_N, base.R_CH_N);
+}
+
+TEST(Fsicr, IASuperAddsC1C2) {
+  const auto p = panamax(25, 60, 100);
+  const auto ia = fsicr_channel_resistance(p, IceClass::IA);
+  const auto ias = fsicr_channel_resistance(p, IceClass::IA_super);
+  const double B = 32, T = 11.733, L = 199.11;
+  const double C1 = 23 * B * 100 / (2 * T / B + 1) + (1 + 0.021 * 90) * (45.8 * B + 14.7 * 40 + 29 * B * 40);
+  const double C2 = (1 + 0.063 * 90) * (1530 + 170 * B) + 400 * (1 + 1.2 * T / B) * B * B / std::sqrt(L);
+  EXPECT_NEAR(ias.C1_N, C1, 1e-6);
+  EXPECT_NEAR(ias.C2_N, C2, 1e-6);
+  EXPECT_NEAR(ias.R_CH_N - ia.R_CH_N, C1 + C2, 1e-6);
+}
+
+TEST(Fsicr, ValidityWarnings) {
+  EXPECT_TRUE(fsicr_validity_warnings(panamax(25, 60, 100)).empty());
+  auto p = panamax(10, 60, 100);  // alpha below 15
+  p.L_m = 7.0;                     // model scale: L, B, T out of range
+  p.B_m = 1.125;
+  p.T_m = 0.4125;
+  const auto w = fsicr_validity_warnings(p);
+  EXPECT_GE(w.size(), 4u);
+  EXPECT_NE(w.front().find("alpha_deg"), std::string::npos);
+}
+
+TEST(Fsicr, PowerFormula) {
+  EXPECT_NEAR(fsicr_power_kW(1e6, 2.03, 7.0), 2.03 * std::pow(1000.0, 1.5) / 7.0, 1e-9);
+}
