@@ -12,13 +12,16 @@
 #include <fstream>
 #include <limits>
 #include <string>
+#include <unistd.h>
 
 namespace brash::hull {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path temp(const std::string& name) { return fs::temp_directory_path() / ("brash_bad_" + name); }
+fs::path temp(const std::string& name) {
+  return fs::temp_directory_path() / ("brash_bad_" + std::to_string(::getpid()) + "_" + name);
+}
 
 void write_bytes(const fs::path& f, const std::string& bytes) {
   std::ofstream(f, std::ios::binary) << bytes;

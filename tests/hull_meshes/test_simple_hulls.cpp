@@ -7,6 +7,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <string>
+#include <unistd.h>
 #include <numbers>
 
 namespace brash::hull {
@@ -36,7 +38,7 @@ TEST(BoxBarge, HydrostaticsExact) {
 
 TEST(BoxBarge, StlRoundTripAndBand) {
   const Mesh m = test::box(7.0, 1.125, 0.625);
-  const auto file = std::filesystem::temp_directory_path() / "brash_test_box.stl";
+  const auto file = std::filesystem::temp_directory_path() / ("brash_test_box_" + std::to_string(::getpid()) + ".stl");
   write_stl(file, m);
   EXPECT_EQ(std::filesystem::file_size(file), 84u + 50u * m.faces.size());
   const Mesh r = read_mesh(file);
