@@ -1,0 +1,98 @@
+// LIGGGHTS scene for a case. Material types: 1 ice, 2 hull, 3 channel walls.
+#include "liggghts_input.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+namespace brash::liggghts {
+
+Box scene_box(const Case& c, double hull_x_min_m, double hull_x_max_m, double hull_z_min_m, double hull_z_max_m,
+              double duration_s) {
+  const double travel = c.ship.speed_m_s * duration_s;
+  const double d = c.ice.diameter_mean_m;
+  Box b;
+  b.xlo = std::min(0.0, c.hull.start_x_m + hull_x_min_m) - 10 * d;
+  b.xhi = std::max(c.channel.length_m, c.hull.start_x_m + hull_x_max_m + travel) + 10 * d;
+  b.ylo = -0.5 * c.channel.width_m - 2 * d;
+  b.yhi = 0.5 * c.channel.width_m + 2 * d;
+  b.zlo = std::min(hull_z_min_m - c.hull.draft_m, -6 * c.ice.thickness_m) - 2 * d;
+  b.zhi = std::max(hull_z_max_m - c.hull.draft_m, 6 * c.ice.thickness_m) + 2 * d;
+  return b;
+}
+
+std::string data_file(const std::vector<Sphere>& spheres, const Box& box, double ice_density_kg_m3) {
+  std::string s = fmt::format(
+      "brash channel packing\n\n{} atoms\n3 atom types\n\n{:.9g} {:.9g} xlo xhi\n{:.9g} {:.9g} ylo yhi\n"
+      "{:.9g} {:.9g} zlo zhi\n\nAtoms\n\n",
+      spheres.size(), box.xlo, box.xhi, box.ylo, box.yhi, box.zlo, box.zhi);
+  s.reserve(s.size() + spheres.size() * 80);
+  for (std::size_t i = 0; i < spheres.size(); ++i) {
+    const auto& p = spheres[i];
+    s += fmt::format("{} 1 {:.17g} {:.17g} {:.17g} {:.17g} {:.17g}\n", i + 1, p.diameter_m, ice_density_kg_m3, p.x_m,
+                     p.y_m, p.z_m);
+  }
+  return s;
+}
+
+std::string input_script(const Case& c, const Box&, const SceneOptions& opt) {
+  const double dt = c.run.timestep_s;
+  const long steps = std::lround(opt.duration_s / dt);
+  const long out_every = std::max(1L, std::lround(c.run.output_interval_s / dt));
+  const long dump_every = std::max(1L, std::lround(c.run.dump_interval_s / dt));
+  const long thermo_every = std::max(1L, steps / 200);
+  const auto& f = c.friction;
+  const double e = c.contact.restitution;
+  std::string s;
+  s += "# brash: LIGGGHTS scene written by brash-liggghts-run for case " + c.name + "\n";
+  s += "atom_style granular\natom_modify map array sort 0 0.0\nboundary f f f\nnewton off\n";
+  s += "communicate single vel yes\nunits si\n";
+  s += opt.ranks > 1 ? "processors 1 * 1\n" : "";
+  s += "read_data packing.data\n";
+  s += fmt::format("neighbor {:.6g} bin\nneigh_modify delay 0\n", 0.2 * c.ice.diameter_mean_m);
+  s += fmt::format(
+      "fix m1 all property/global youngsModulus peratomtype {0:g} {0:g} {0:g}\n"
+      "fix m2 all property/global poissonsRatio peratomtype {1:g} {1:g} {1:g}\n"
+      "fix m3 all property/global coefficientRestitution peratomtypepair 3 {2:g} {2:g} {2:g} {2:g} {2:g} {2:g} {2:g} "
+      "{2:g} {2:g}\n"
+      "fix m4 all property/global coefficientFriction peratomtypepair 3 {3:g} {4:g} {5:g} {4:g} {4:g} {4:g} {5:g} "
+      "{4:g} {5:g}\n",
+      c.contact.youngs_modulus_pa, c.contact.poisson_ratio, e, f.ice_ice, f.ice_hull, f.ice_wall);
+  s += "pair_style gran model hertz tangential history\npair_coeff * *\n";
+  s += fmt::format("timestep {:.9g}\n", dt);
+  // Hull: STL frame has the keel at z = 0 and x = 0 at the aft perpendicular.
+  const double hull_x0 = c.hull.start_x_m;
+  s += fmt::format("fix hull all mesh/surface/stress file {} type 2 move {:.9g} 0 {:.9g} reference_point 0 0 0\n",
+                   opt.hull_file, hull_x0, -c.hull.draft_m);
+  s += "fix hullwall all wall/gran model hertz tangential history mesh n_meshes 1 meshes hull\n";
+  s += fmt::format("fix sides all wall/gran model hertz tangential history primitive type 3 yplane {:.9g}\n",
+                   -0.5 * c.channel.width_m);
+  s += fmt::format("fix sides2 all wall/gran model hertz tangential history primitive type 3 yplane {:.9g}\n",
+                   0.5 * c.channel.width_m);
+  s += fmt::format("fix mv all move/mesh mesh hull linear {:.9g} 0 0\n", c.ship.speed_m_s);
+  s += "fix integr all nve/sphere\n";
+  s += fmt::format("fix grav all gravity {:.9g} vector 0 0 -1\n", c.water.gravity_m_s2);
+  s += "fix ts all check/timestep/gran 1000 0.1 0.1\n";
+  // fluid forces last: implicit added mass scales the sum of all other forces
+  s += fmt::format(
+      "fix fl all icefluid model {} treatment {} cd {:.9g} drag_law {} nu {:.9g} ca {} water_level {:.9g} "
+      "water_density {:.9g} g {:.9g}\n",
+      to_string(c.fluid.model), to_string(c.fluid.treatment), c.fluid.drag_coefficient, to_string(c.fluid.drag_law),
+      c.water.kinematic_viscosity_m2_s, to_string(c.fluid.ca_table), c.water.level_m, c.water.density_kg_m3,
+      c.water.gravity_m_s2);
+  s += fmt::format("variable t equal step*dt\n");
+  s += fmt::format("fix hf all ave/time {0} 1 {0} v_t f_hull[1] f_hull[2] f_hull[3] file hull_force.raw\n", out_every);
+  s += fmt::format(
+      "dump parts all custom {} particles/dump.*.txt id x y z radius vx vy vz f_fl[1] f_fl[2] f_fl[3] f_fl[4]\n",
+      dump_every);
+  s += "dump_modify parts pad 10\n";
+  if (opt.restart_every_steps > 0)
+    s += fmt::format("restart {} restart/a.restart restart/b.restart\n", opt.restart_every_steps);
+  s += fmt::format("thermo_style custom step v_t atoms ke f_hull[1] cpu\nthermo {}\nthermo_modify norm no\n",
+                   thermo_every);
+  s += fmt::format("run {}\n", steps);
+  s += "write_restart restart/final.restart\n";
+  return s;
+}
+
+}  // namespace brash::liggghts
