@@ -72,6 +72,14 @@ int run_check(const std::filesystem::path& file, double draft, double lpp, const
   if (!json_out.empty()) {
     std::ofstream(json_out) << text << "\n";
   }
+  for (const auto& problem : unit_problems(m, draft, lpp))
+    std::cerr << fmt::format("brash-hull: {}: {}\n", file.string(), problem);
+  if (!c.closed)
+    std::cerr << fmt::format("brash-hull: {}: mesh is not closed ({} boundary edges, {} non-manifold)\n",
+                             file.string(), c.boundary_edges, c.nonmanifold_edges);
+  if (c.closed && !c.outward)
+    std::cerr << fmt::format("brash-hull: {}: faces are not consistently outward ({} misoriented edges, volume {} m^3)\n",
+                             file.string(), c.misoriented_edges, c.signed_volume_m3);
   const bool good = c.ok() && j["unit_problems"].empty();
   if (!good) std::cerr << fmt::format("brash-hull: {}: mesh check or unit sanity failed (see JSON)\n", file.string());
   return good ? 0 : 2;

@@ -91,6 +91,23 @@ TEST(BadInput, NanVertexInAsciiStl) {
   fs::remove(f);
 }
 
+TEST(GoodInput, AsciiStl) {
+  const auto f = temp("tetra_ascii.stl");
+  write_bytes(f, "solid t\n"
+                 "facet normal 0 0 -1\n outer loop\n  vertex 0 0 0\n  vertex 0 1 0\n  vertex 1 0 0\n endloop\nendfacet\n"
+                 "facet normal 0 -1 0\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n  vertex 0 0 1\n endloop\nendfacet\n"
+                 "facet normal -1 0 0\n outer loop\n  vertex 0 0 0\n  vertex 0 0 1\n  vertex 0 1 0\n endloop\nendfacet\n"
+                 "facet normal 1 1 1\n outer loop\n  vertex 1 0 0\n  vertex 0 1 0\n  vertex 0 0 1\n endloop\nendfacet\n"
+                 "endsolid t\n");
+  const Mesh m = read_mesh(f);
+  EXPECT_EQ(m.vertices.size(), 4u);
+  EXPECT_EQ(m.faces.size(), 4u);
+  const MeshCheck c = check_mesh(m);
+  EXPECT_TRUE(c.ok());
+  EXPECT_NEAR(c.signed_volume_m3, 1.0 / 6.0, 1e-15);
+  fs::remove(f);
+}
+
 TEST(BadInput, TruncatedBinaryStl) {
   const auto f = temp("truncated.stl");
   write_stl(f, test::box(2, 1, 1));

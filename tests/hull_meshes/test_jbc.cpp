@@ -5,6 +5,7 @@
 #include <brash/hull/mesh.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -93,6 +94,26 @@ TEST_F(Jbc, CoarserGridStaysWithinOnePercent) {
   EXPECT_LT(rel(h.volume_m3, 2.78703), 0.01);
   EXPECT_LT(rel(h.waterplane_area_m2, 7.286), 0.01);
   EXPECT_LT(rel(h.wetted_surface_m2, 12.42), 0.01);
+}
+
+TEST_F(Jbc, WaterlineBandForDem) {
+  const double lo = kT - 0.1, hi = kT + 0.1;
+  const Mesh band = clip_band(mesh(), lo, hi);
+  EXPECT_GT(band.faces.size(), 1000u);
+  EXPECT_LT(band.faces.size(), mesh().faces.size() / 2);
+  for (const auto& f : band.faces) {
+    double zmin = 1e9, zmax = -1e9;
+    for (int v : f) {
+      zmin = std::min(zmin, band.vertices[v].z());
+      zmax = std::max(zmax, band.vertices[v].z());
+    }
+    ASSERT_TRUE(zmax >= lo && zmin <= hi);
+  }
+  EXPECT_FALSE(check_mesh(band).closed);
+  // The band keeps the waterline: same waterline length and breadth as the whole hull.
+  const auto segs_full = hydrostatics(mesh(), kT, kLpp), segs_band = hydrostatics(band, kT, kLpp);
+  EXPECT_DOUBLE_EQ(segs_band.lwl_m, segs_full.lwl_m);
+  EXPECT_DOUBLE_EQ(segs_band.bwl_m, segs_full.bwl_m);
 }
 
 // README values (NURBS): alpha 38.0, phi2 79.7, psi 83.6, L_par 4.144, L_bow 1.376, A_wf 1.207, same
