@@ -1,0 +1,172 @@
+// brash::ode::World: an ODE world of ice spheres, optional kinematic hull (trimesh) and fixed walls,
+// stepped with dWorldQuickStep, with the per-sphere fluid forces of brash_core (buoyancy, drag, added mass).
+//
+// Per step (World::step):
+//   1. fluid: for every awake, uncull'd sphere: out = core::evaluate(params, {r, m, x(n), v(n)}, state, dt);
+//      the applied force is G = (-m g e_z + out.force_N) (.) out.scale (.) (M / m) and the body mass is M
+//      (see "Implicit added mass in ODE" below); state = advance(state, v(n)).
+//   2. collide: SAP broad phase, contact joints (dContactApprox1, Coulomb mu per pair type, sphere body first).
+//   3. dWorldQuickStep (semi-implicit Euler: v(n+1) = v(n) + dt (G + F_contact) / M, x(n+1) = x(n) + dt v(n+1)).
+//   4. hull force = -sum fb.f1 over the hull contacts (feedback read after the step, before emptying the group).
+//
+// Implicit added mass in ODE (the "treatment" of physics.md). The core asks for (m + m_a,i) a_i = F_i per axis,
+// F = every force on the sphere. ODE only knows the contact forces inside its solver, and its translational mass
+// is isotropic. We give the body the isotropic mass M = m + m_a,h (m_a,h = rho_w V_s (Ca_x + Ca_y)/2, the
+// horizontal added mass, updated every step) and apply G_i = F_ext,i * M / (m + m_a,i). Then
+//   - external forces (gravity, buoyancy, drag) get exactly a_i = F_ext,i / (m + m_a,i) on every axis;
+//   - contact forces get exactly 1/(m + m_a) on x and y (Table 1: Ca_x = Ca_y), and 1/M instead of
+//     1/(m + m_a,z) on z (the solver sees the heavier horizontal inertia; Table 1 has Ca_z <= Ca_x except in
+//     the paper's "text" variant). Nothing is lagged, so it is as stable as plain ODE for any Ca.
+// The alternative ImplicitMode::ScaleForces keeps M = m and only scales the external forces (contacts then see
+// the bare mass m: no added inertia in collisions). Both are exact for a sphere without contacts.
+// The explicit treatment keeps M = m and adds the core's lagged F_a = -m_a (v(n) - v(n-1)) / dt.
+#pragma once
+#include <ode/ode.h>
+
+#include <array>
+#include <cstdint>
+#include <deque>
+#include <string>
+#include <vector>
+
+#include "brash/core/fluid.hpp"
+
+namespace brash::ode {
+
+using core::Vec3;
+
+enum class ImplicitMode { EffectiveMass, ScaleForces };
+
+struct StepperSettings {
+  double dt_s = 5e-4;              // ode.md: 5e-4 recommended, 1e-3 cross-checked
+  int iterations = 20;             // dWorldSetQuickStepNumIterations
+  double erp = 0.2;                // world ERP
+  double cfm = 1e-5;               // world CFM
+  double contact_surface_layer = 0.0;
+  int max_contacts_per_pair = 8;   // sphere-trimesh gives one contact per touched triangle (up to 6)
+  double angular_damping = 0.0;    // dBodySetAngularDamping (fluid torque is neglected: default off)
+};
+
+struct Frictions {
+  double ice_ice = 1.35;
+  double ice_hull = 0.1;
+  double ice_wall = 1.35;
+};
+
+// Skips (each with a switch; effect measured in docs/ode.md).
+struct Skips {
+  bool auto_disable = false;            // ODE auto-disable of resting spheres
+  double disable_linear_m_s = 0.005;
+  double disable_angular_rad_s = 0.5;
+  int disable_steps = 20;
+  bool auto_disable_far_only = true;    // keep spheres within cull distance of the hull always awake
+  bool cull = false;                    // freeze spheres far from the hull (static obstacles)
+  double cull_ahead_m = 1.0;            // ahead of the bow (hull max x)
+  double cull_behind_m = 1.0;           // behind the stern (hull min x)
+  double cull_side_m = 1e9;             // beyond |y| of the hull's half beam + this
+  int cull_every = 20;                  // re-evaluate the culled set every n steps
+};
+
+struct Stats {
+  double t_s = 0;
+  long steps = 0;
+  long particle_steps = 0;          // sum over steps of the number of stepped (awake, uncull'd) spheres
+  double wall_fluid_s = 0, wall_collide_s = 0, wall_step_s = 0;
+  std::size_t contacts_last = 0;
+  std::size_t awake_last = 0;
+};
+
+class World {
+ public:
+  World(const core::FluidParams& fluid, const StepperSettings& stepper, const Frictions& friction,
+        const Skips& skips = {}, ImplicitMode mode = ImplicitMode::EffectiveMass);
+  ~World();
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+
+  // Returns the sphere index.
+  std::size_t add_sphere(const Vec3& position_m, double radius_m, double density_kg_m3,
+                         const Vec3& velocity_m_s = Vec3::Zero());
+  // Axis-aligned fixed box (wall).
+  void add_wall_box(const Vec3& centre_m, const Vec3& size_m);
+  // Kinematic trimesh hull. vertices/triangles are copied (kept alive here); hull frame = body frame.
+  void set_hull(std::vector<double> vertices_xyz, std::vector<dTriIndex> triangles, const Vec3& position_m,
+                const Vec3& velocity_m_s);
+
+  void step();
+
+  // Extra ODE velocity damping on every sphere (per-step scale factors, threshold 0), for preparing a bed
+  // at rest (settling); set (0, angular_damping) back before the measured run. Not a physical force.
+  void set_damping(double linear_per_step, double angular_per_step);
+
+  std::size_t size() const { return spheres_.size(); }
+  Vec3 position(std::size_t i) const;
+  Vec3 velocity(std::size_t i) const;
+  Vec3 angular_velocity(std::size_t i) const;
+  double radius(std::size_t i) const { return spheres_[i].radius_m; }
+  double mass(std::size_t i) const { return spheres_[i].mass_kg; }
+  const core::FluidOutput& fluid_output(std::size_t i) const { return spheres_[i].last; }
+  bool awake(std::size_t i) const;
+  bool culled(std::size_t i) const { return spheres_[i].culled; }
+
+  bool has_hull() const { return hull_body_ != nullptr; }
+  Vec3 hull_position() const;
+  // Force of the ice on the hull during the last step (contacts only), and its number of contacts.
+  const Vec3& hull_force() const { return hull_force_N_; }
+  std::size_t hull_contacts() const { return hull_contacts_; }
+  double hull_min_x_body() const { return hull_min_[0]; }
+  double hull_max_x_body() const { return hull_max_[0]; }
+  double hull_half_beam() const { return std::max(std::abs(hull_min_[1]), std::abs(hull_max_[1])); }
+
+  const Stats& stats() const { return stats_; }
+  const StepperSettings& stepper() const { return stepper_; }
+  const core::FluidParams& fluid() const { return fluid_; }
+
+ private:
+  struct SphereRec {
+    dBodyID body = nullptr;
+    dGeomID geom = nullptr;
+    double radius_m = 0, mass_kg = 0, inertia = 0;  // inertia: true 2/5 m r^2
+    double ode_mass_kg = 0;                         // current M given to ODE
+    core::FluidState state;
+    core::FluidOutput last;
+    bool culled = false;
+  };
+  static void near_callback(void* data, dGeomID a, dGeomID b);
+  void collide_pair(dGeomID a, dGeomID b);
+  void apply_fluid();
+  void update_cull();
+  void set_ode_mass(SphereRec& s, double M);
+
+  core::FluidParams fluid_;
+  StepperSettings stepper_;
+  Frictions friction_;
+  Skips skips_;
+  ImplicitMode mode_;
+  dWorldID world_ = nullptr;
+  dSpaceID space_ = nullptr;
+  dJointGroupID contacts_ = nullptr;
+  std::vector<SphereRec> spheres_;
+  std::vector<dGeomID> walls_;
+  dBodyID hull_body_ = nullptr;
+  dGeomID hull_geom_ = nullptr;
+  dTriMeshDataID hull_data_ = nullptr;
+  std::vector<double> hull_vertices_;
+  std::vector<dTriIndex> hull_triangles_;
+  std::array<double, 3> hull_min_{0, 0, 0}, hull_max_{0, 0, 0};
+  std::deque<dJointFeedback> hull_feedback_;
+  std::vector<dContact> contact_buf_;
+  Vec3 hull_force_N_ = Vec3::Zero();
+  std::size_t hull_contacts_ = 0;
+  std::size_t contacts_this_step_ = 0;
+  Stats stats_;
+};
+
+// dInitODE2 / dCloseODE once per process (RAII); also checks double precision.
+class OdeLibrary {
+ public:
+  OdeLibrary();
+  ~OdeLibrary();
+};
+
+}  // namespace brash::ode

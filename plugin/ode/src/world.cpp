@@ -1,0 +1,304 @@
+// ODE world of ice spheres: see world.hpp for the step, the implicit added-mass realisation and the skips.
+#include "brash/ode/world.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+namespace brash::ode {
+namespace {
+
+constexpr unsigned kSphereBit = 1u, kHullBit = 2u, kWallBit = 4u;
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Sphere index is stored in the geom data as index + 1 (0 = not a sphere).
+void* tag(std::size_t i) { return reinterpret_cast<void*>(static_cast<std::uintptr_t>(i + 1)); }
+std::size_t untag(dGeomID g) { return static_cast<std::size_t>(reinterpret_cast<std::uintptr_t>(dGeomGetData(g))); }
+
+}  // namespace
+
+OdeLibrary::OdeLibrary() {
+  if (!dInitODE2(0)) throw std::runtime_error("dInitODE2 failed");
+  if (!dCheckConfiguration("ODE_double_precision"))
+    throw std::runtime_error("libode is not built in double precision (dCheckConfiguration)");
+  dAllocateODEDataForThread(dAllocateMaskAll);
+}
+OdeLibrary::~OdeLibrary() { dCloseODE(); }
+
+World::World(const core::FluidParams& fluid, const StepperSettings& stepper, const Frictions& friction,
+             const Skips& skips, ImplicitMode mode)
+    : fluid_(fluid), stepper_(stepper), friction_(friction), skips_(skips), mode_(mode) {
+  fluid_.apply_gravity = false;  // gravity is applied here, with the true mass m (ODE's world gravity would use M)
+  fluid_.validate("brash-ode");
+  if (!(stepper_.dt_s > 0) || !std::isfinite(stepper_.dt_s)) throw std::invalid_argument("dt must be > 0");
+  world_ = dWorldCreate();
+  dWorldSetGravity(world_, 0, 0, 0);
+  dWorldSetERP(world_, stepper_.erp);
+  dWorldSetCFM(world_, stepper_.cfm);
+  dWorldSetQuickStepNumIterations(world_, stepper_.iterations);
+  dWorldSetContactSurfaceLayer(world_, stepper_.contact_surface_layer);
+  dWorldSetAutoDisableFlag(world_, skips_.auto_disable ? 1 : 0);
+  dWorldSetAutoDisableLinearThreshold(world_, skips_.disable_linear_m_s);
+  dWorldSetAutoDisableAngularThreshold(world_, skips_.disable_angular_rad_s);
+  dWorldSetAutoDisableSteps(world_, skips_.disable_steps);
+  dWorldSetAutoDisableTime(world_, 0);
+  dWorldSetAutoDisableAverageSamplesCount(world_, 10);
+  space_ = dSweepAndPruneSpaceCreate(nullptr, dSAP_AXES_XYZ);  // x (channel length) first
+  contacts_ = dJointGroupCreate(0);
+  contact_buf_.resize(static_cast<std::size_t>(std::max(1, stepper_.max_contacts_per_pair)));
+}
+
+World::~World() {
+  dJointGroupDestroy(contacts_);
+  for (auto& s : spheres_) dGeomDestroy(s.geom);
+  for (auto g : walls_) dGeomDestroy(g);
+  if (hull_geom_) dGeomDestroy(hull_geom_);
+  if (hull_data_) dGeomTriMeshDataDestroy(hull_data_);
+  dSpaceDestroy(space_);
+  dWorldDestroy(world_);
+}
+
+void World::set_ode_mass(SphereRec& s, double M) {
+  if (s.ode_mass_kg == M) return;
+  dMass dm;
+  dMassSetParameters(&dm, M, 0, 0, 0, s.inertia, s.inertia, s.inertia, 0, 0, 0);
+  dBodySetMass(s.body, &dm);
+  s.ode_mass_kg = M;
+}
+
+std::size_t World::add_sphere(const Vec3& p, double radius_m, double density_kg_m3, const Vec3& v) {
+  SphereRec s;
+  s.radius_m = radius_m;
+  s.mass_kg = density_kg_m3 * 4.0 / 3.0 * std::numbers::pi * radius_m * radius_m * radius_m;
+  s.inertia = 0.4 * s.mass_kg * radius_m * radius_m;
+  s.body = dBodyCreate(world_);
+  dBodySetPosition(s.body, p.x(), p.y(), p.z());
+  dBodySetLinearVel(s.body, v.x(), v.y(), v.z());
+  if (stepper_.angular_damping > 0) dBodySetAngularDamping(s.body, stepper_.angular_damping);
+  dBodySetAutoDisableDefaults(s.body);
+  set_ode_mass(s, s.mass_kg);
+  s.geom = dCreateSphere(space_, radius_m);
+  dGeomSetBody(s.geom, s.body);
+  dGeomSetCategoryBits(s.geom, kSphereBit);
+  dGeomSetCollideBits(s.geom, kSphereBit | kHullBit | kWallBit);
+  dGeomSetData(s.geom, tag(spheres_.size()));
+  spheres_.push_back(s);
+  return spheres_.size() - 1;
+}
+
+void World::add_wall_box(const Vec3& c, const Vec3& size) {
+  dGeomID g = dCreateBox(space_, size.x(), size.y(), size.z());
+  dGeomSetPosition(g, c.x(), c.y(), c.z());
+  dGeomSetCategoryBits(g, kWallBit);
+  dGeomSetCollideBits(g, kSphereBit);
+  dGeomSetData(g, nullptr);
+  walls_.push_back(g);
+}
+
+void World::set_hull(std::vector<double> vertices, std::vector<dTriIndex> triangles, const Vec3& position,
+                     const Vec3& velocity) {
+  if (hull_body_) throw std::logic_error("set_hull called twice");
+  hull_vertices_ = std::move(vertices);
+  hull_triangles_ = std::move(triangles);
+  hull_min_ = {std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
+               std::numeric_limits<double>::max()};
+  hull_max_ = {std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest(),
+               std::numeric_limits<double>::lowest()};
+  for (std::size_t i = 0; i < hull_vertices_.size(); ++i) {
+    hull_min_[i % 3] = std::min(hull_min_[i % 3], hull_vertices_[i]);
+    hull_max_[i % 3] = std::max(hull_max_[i % 3], hull_vertices_[i]);
+  }
+  hull_data_ = dGeomTriMeshDataCreate();
+  dGeomTriMeshDataBuildDouble(hull_data_, hull_vertices_.data(), 3 * sizeof(double),
+                              static_cast<int>(hull_vertices_.size() / 3), hull_triangles_.data(),
+                              static_cast<int>(hull_triangles_.size()), 3 * sizeof(dTriIndex));
+  dGeomTriMeshDataPreprocess2(hull_data_, 1U << dTRIDATAPREPROCESS_BUILD_CONCAVE_EDGES, nullptr);
+  hull_geom_ = dCreateTriMesh(space_, hull_data_, nullptr, nullptr, nullptr);
+  hull_body_ = dBodyCreate(world_);
+  dGeomSetBody(hull_geom_, hull_body_);
+  dBodySetKinematic(hull_body_);
+  dBodySetAutoDisableFlag(hull_body_, 0);
+  dBodySetPosition(hull_body_, position.x(), position.y(), position.z());
+  dBodySetLinearVel(hull_body_, velocity.x(), velocity.y(), velocity.z());
+  dGeomSetCategoryBits(hull_geom_, kHullBit);
+  dGeomSetCollideBits(hull_geom_, kSphereBit);
+  dGeomSetData(hull_geom_, nullptr);
+}
+
+Vec3 World::position(std::size_t i) const {
+  const dReal* p = dBodyGetPosition(spheres_[i].body);
+  return {p[0], p[1], p[2]};
+}
+Vec3 World::velocity(std::size_t i) const {
+  const dReal* v = dBodyGetLinearVel(spheres_[i].body);
+  return {v[0], v[1], v[2]};
+}
+Vec3 World::angular_velocity(std::size_t i) const {
+  const dReal* v = dBodyGetAngularVel(spheres_[i].body);
+  return {v[0], v[1], v[2]};
+}
+bool World::awake(std::size_t i) const { return dBodyIsEnabled(spheres_[i].body) != 0; }
+Vec3 World::hull_position() const {
+  if (!hull_body_) return Vec3::Zero();
+  const dReal* p = dBodyGetPosition(hull_body_);
+  return {p[0], p[1], p[2]};
+}
+
+void World::set_damping(double linear, double angular) {
+  for (auto& s : spheres_) {
+    dBodySetLinearDampingThreshold(s.body, 0);
+    dBodySetAngularDampingThreshold(s.body, 0);
+    dBodySetLinearDamping(s.body, linear);
+    dBodySetAngularDamping(s.body, angular);
+  }
+}
+
+void World::update_cull() {
+  if (!hull_body_ || (!skips_.cull && !(skips_.auto_disable && skips_.auto_disable_far_only))) return;
+  const Vec3 h = hull_position();
+  const double lo = h.x() + hull_min_[0] - skips_.cull_behind_m;
+  const double hi = h.x() + hull_max_[0] + skips_.cull_ahead_m;
+  const double side = hull_half_beam() + skips_.cull_side_m;
+  for (auto& s : spheres_) {
+    const dReal* p = dBodyGetPosition(s.body);
+    const bool far = p[0] < lo || p[0] > hi || std::abs(p[1] - h.y()) > side;
+    if (skips_.cull) {
+      if (far && !s.culled) {
+        s.culled = true;
+        dBodySetLinearVel(s.body, 0, 0, 0);
+        dBodySetAngularVel(s.body, 0, 0, 0);
+        dBodyDisable(s.body);
+      } else if (!far && s.culled) {
+        s.culled = false;
+        s.state = {};
+        dBodyEnable(s.body);
+      }
+    }
+    if (skips_.auto_disable && skips_.auto_disable_far_only) {
+      dBodySetAutoDisableFlag(s.body, far ? 1 : 0);
+      if (!far && !s.culled && !dBodyIsEnabled(s.body)) dBodyEnable(s.body);
+    }
+  }
+}
+
+void World::apply_fluid() {
+  const double g = fluid_.gravity_m_s2;
+  std::size_t awake = 0;
+  for (auto& s : spheres_) {
+    // Disabled bodies accumulate forces (ode.md): never add to them.
+    if (s.culled || !dBodyIsEnabled(s.body)) continue;
+    ++awake;
+    const dReal* p = dBodyGetPosition(s.body);
+    const dReal* v = dBodyGetLinearVel(s.body);
+    const Vec3 x(p[0], p[1], p[2]), vel(v[0], v[1], v[2]);
+    s.last = core::evaluate(fluid_, core::Sphere{s.radius_m, s.mass_kg, x, vel}, s.state, stepper_.dt_s);
+    Vec3 f = s.last.force_N;
+    f.z() -= s.mass_kg * g;
+    double M = s.mass_kg;
+    if (fluid_.has_added_mass() && fluid_.treatment == core::Treatment::Implicit) {
+      if (mode_ == ImplicitMode::EffectiveMass) {
+        const double ma_h = fluid_.water_density_kg_m3 * s.last.immersion.volume_m3 * 0.5 *
+                            (s.last.ca.x() + s.last.ca.y());
+        M = s.mass_kg + ma_h;
+        f = f.cwiseProduct(s.last.scale) * (M / s.mass_kg);
+      } else {
+        f = f.cwiseProduct(s.last.scale);
+      }
+    }
+    set_ode_mass(s, M);
+    dBodyAddForce(s.body, f.x(), f.y(), f.z());
+    s.state = core::advance(s.state, vel);
+  }
+  stats_.awake_last = awake;
+  stats_.particle_steps += static_cast<long>(awake);
+}
+
+void World::near_callback(void* data, dGeomID a, dGeomID b) { static_cast<World*>(data)->collide_pair(a, b); }
+
+void World::collide_pair(dGeomID a, dGeomID b) {
+  // Order: sphere first (the robust feedback rule of ode.md: attach sphere first, F_hull = -sum f1).
+  std::size_t ia = untag(a), ib = untag(b);
+  if (ia == 0) {
+    std::swap(a, b);
+    std::swap(ia, ib);
+  }
+  if (ia == 0) return;  // hull-wall (never reaches here thanks to the collide bits)
+  SphereRec& sa = spheres_[ia - 1];
+  const bool hull = (b == hull_geom_);
+  SphereRec* sb = ib ? &spheres_[ib - 1] : nullptr;
+  const bool a_on = !sa.culled && dBodyIsEnabled(sa.body);
+  const bool b_on = sb && !sb->culled && dBodyIsEnabled(sb->body);
+  if (!a_on && !b_on) {
+    // Both asleep/culled: nothing to solve, unless the moving hull touches a sleeping (not culled) sphere.
+    if (!(hull && !sa.culled)) return;
+  }
+  double mu = friction_.ice_wall;
+  if (hull) mu = friction_.ice_hull;
+  else if (sb) mu = friction_.ice_ice;
+  const int n = dCollide(a, b, static_cast<int>(contact_buf_.size()), &contact_buf_[0].geom, sizeof(dContact));
+  if (n <= 0) return;
+  // A sleeping sphere touched by an awake one or by the hull wakes up (ode.md §3); a culled one stays a
+  // static obstacle (its side of the joint is the static environment, 0).
+  dBodyID ba = sa.culled ? nullptr : sa.body;
+  dBodyID bb = hull ? hull_body_ : (sb && !sb->culled ? sb->body : nullptr);
+  if (ba && !dBodyIsEnabled(ba)) dBodyEnable(ba);
+  if (bb && !hull && !dBodyIsEnabled(bb)) dBodyEnable(bb);
+  bool flip = false;
+  if (!ba) {
+    // The sphere is culled: only an awake partner sphere gets a joint (with the culled one as static).
+    if (!bb || hull) return;
+    std::swap(ba, bb);
+    flip = true;
+  }
+  for (int i = 0; i < n; ++i) {
+    dContact& c = contact_buf_[static_cast<std::size_t>(i)];
+    if (flip) {  // the normal points into g1's body: swap the geoms and reverse it
+      std::swap(c.geom.g1, c.geom.g2);
+      for (int k = 0; k < 3; ++k) c.geom.normal[k] = -c.geom.normal[k];
+    }
+    c.surface.mode = dContactApprox1;
+    c.surface.mu = mu;
+    c.surface.bounce = 0;
+    dJointID j = dJointCreateContact(world_, contacts_, &c);
+    dJointAttach(j, ba, bb);
+    if (hull) {
+      hull_feedback_.emplace_back();
+      dJointSetFeedback(j, &hull_feedback_.back());
+    }
+  }
+  contacts_this_step_ += static_cast<std::size_t>(n);
+}
+
+void World::step() {
+  using clock = std::chrono::steady_clock;
+  if (stats_.steps % std::max(1, skips_.cull_every) == 0) update_cull();
+  auto t0 = clock::now();
+  apply_fluid();
+  stats_.wall_fluid_s += seconds_since(t0);
+  t0 = clock::now();
+  hull_feedback_.clear();
+  contacts_this_step_ = 0;
+  dSpaceCollide(space_, this, &World::near_callback);
+  stats_.wall_collide_s += seconds_since(t0);
+  t0 = clock::now();
+  dWorldQuickStep(world_, stepper_.dt_s);
+  stats_.wall_step_s += seconds_since(t0);
+  Vec3 f = Vec3::Zero();
+  for (const auto& fb : hull_feedback_) f -= Vec3(fb.f1[0], fb.f1[1], fb.f1[2]);
+  hull_force_N_ = f;
+  hull_contacts_ = hull_feedback_.size();
+  dJointGroupEmpty(contacts_);
+  stats_.contacts_last = contacts_this_step_;
+  stats_.steps += 1;
+  stats_.t_s = static_cast<double>(stats_.steps) * stepper_.dt_s;
+}
+
+}  // namespace brash::ode
