@@ -49,4 +49,44 @@ struct Wedge {
   }
 };
 
+// Closed loft through horizontal sections (same vertex count, counter-clockwise from above, convex ends)
+// at increasing heights z[k]. Between two levels each quad is split into two triangles.
+inline Mesh loft(const std::vector<std::vector<Eigen::Vector2d>>& sections, const std::vector<double>& z) {
+  Mesh m;
+  const int n = static_cast<int>(sections.front().size()), levels = static_cast<int>(z.size());
+  for (int k = 0; k < levels; ++k)
+    for (const auto& p : sections[k]) m.vertices.emplace_back(p.x(), p.y(), z[k]);
+  const int top = (levels - 1) * n;
+  for (int i = 1; i + 1 < n; ++i) {
+    m.faces.push_back({0, i + 1, i});
+    m.faces.push_back({top, top + i, top + i + 1});
+  }
+  for (int k = 0; k + 1 < levels; ++k)
+    for (int i = 0; i < n; ++i) {
+      const int a = k * n + i, b = k * n + (i + 1) % n;
+      m.faces.push_back({a, b, b + n});
+      m.faces.push_back({a, b + n, a + n});
+    }
+  return m;
+}
+
+// Bow with a vertical shoulder at x = x_shoulder and a stem raked at phi1: the bow side is the ruled
+// surface of straight waterlines from the shoulder (B/2) to the stem (0). On the levels z = T - dz, T,
+// T + dz (dz as in measure_fsicr) the sections are exact, so the buttock at B/4 rakes at
+// phi2 = atan(2 tan(phi1)) and the entrance angle at T is atan(B/2 / (x_stem(T) - x_shoulder)).
+struct RakedStem {
+  double x_shoulder, l_bow_T, B, T, D, phi1_deg, lpp;
+  double x_stem(double z) const { return x_shoulder + l_bow_T + (z - T) / std::tan(phi1_deg * std::numbers::pi / 180); }
+  std::vector<double> levels() const {
+    const double dz = 5e-3 * (lpp / 7.0);
+    return {0.0, T - dz, T, T + dz, D};
+  }
+  Mesh mesh() const {
+    std::vector<std::vector<Eigen::Vector2d>> sections;
+    for (double z : levels())
+      sections.push_back({{0, -B / 2}, {x_shoulder, -B / 2}, {x_stem(z), 0}, {x_shoulder, B / 2}, {0, B / 2}});
+    return loft(sections, levels());
+  }
+};
+
 }  // namespace brash::hull::test

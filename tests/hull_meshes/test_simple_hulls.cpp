@@ -96,5 +96,22 @@ TEST(WedgeBow, OtherAnglesAndBulbRule) {
   EXPECT_NEAR(di.params.phi2_deg, 100.0, 1e-9);
 }
 
+TEST(RakedStemBow, StemAndButtockAnglesDiffer) {
+  const test::RakedStem r{.x_shoulder = 5.0, .l_bow_T = 1.0, .B = 1.0, .T = 0.4, .D = 0.7, .phi1_deg = 70.0, .lpp = 6.0};
+  const Mesh m = r.mesh();
+  ASSERT_TRUE(check_mesh(m).ok());
+  const FsicrDetail d = measure_fsicr_detail(m, r.T, r.lpp);
+  const double phi2 = std::atan(2 * std::tan(70.0 / kDeg)) * kDeg;  // 79.7 deg
+  EXPECT_NEAR(d.params.alpha_deg, std::atan(0.5 / 1.0) * kDeg, 1e-9);
+  EXPECT_NEAR(d.phi1_geometric_deg, 70.0, 1e-9);
+  EXPECT_NEAR(d.params.phi1_deg, 70.0, 1e-9);
+  EXPECT_NEAR(d.params.phi2_deg, phi2, 1e-9);
+  EXPECT_NEAR(d.params.psi_deg, std::atan(std::tan(phi2 / kDeg) / std::sin(d.params.alpha_deg / kDeg)) * kDeg, 1e-9);
+  EXPECT_NEAR(d.x_stem_m, 6.0, 1e-12);
+  EXPECT_NEAR(d.params.L_par_m, 5.0, 2 * r.lpp / 70000);
+  EXPECT_NEAR(d.params.L_bow_m, 1.0, 2 * r.lpp / 70000);
+  EXPECT_NEAR(d.params.A_wf_m2, 0.5, 2 * r.lpp / 70000);
+}
+
 }  // namespace
 }  // namespace brash::hull
