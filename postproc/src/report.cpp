@@ -103,7 +103,8 @@ FsicrSummary resolve_fsicr(const PostCase& c, const std::optional<FsicrParams>& 
         s.params.*field = v;
         s.source[name] = "override";
       }
-  s.params.psi_deg = fsicr_psi_deg(s.params.alpha_deg, s.params.phi2_deg);
+  s.params.psi_deg = c.psi_override_deg ? *c.psi_override_deg : fsicr_psi_deg(s.params.alpha_deg, s.params.phi2_deg);
+  s.source["psi_deg"] = c.psi_override_deg ? "override" : "computed";
   std::vector<std::string> missing;
   for (const auto& [name, src] : s.source)
     if (src == "missing") missing.push_back(name);
@@ -118,7 +119,7 @@ FsicrSummary resolve_fsicr(const PostCase& c, const std::optional<FsicrParams>& 
                                      fmt::join(missing, ", ")));
     return s;
   }
-  s.result = fsicr_channel_resistance(s.params, ic);
+  s.result = fsicr_channel_resistance(s.params, ic, {}, c.psi_override_deg);
   s.warnings = fsicr_validity_warnings(s.params);
   return s;
 }
@@ -248,7 +249,7 @@ std::string report_markdown(const RunAnalysis& a) {
   md += fmt::format("## FSICR channel resistance (ice class {})\n\n| parameter | value | source |\n|---|---|---|\n", a.fsicr.ice_class);
   for (const auto& [name, field] : fsicr_fields())
     md += fmt::format("| {} | {:.4g} | {} |\n", name, a.fsicr.params.*field, a.fsicr.source.at(name));
-  md += fmt::format("| psi_deg | {:.4g} | computed |\n\n", a.fsicr.params.psi_deg);
+  md += fmt::format("| psi_deg | {:.4g} | {} |\n\n", a.fsicr.params.psi_deg, a.fsicr.source.at("psi_deg"));
   if (const auto& r = a.fsicr.result)
     md += fmt::format("R_CH = **{:.1f} kN** (H_F {:.3f} m, H_M {:.1f} m, Cmu {:.4f}, Cpsi {:.4f}, (LT/B^2)^3 {:.2f} used {:.2f}). "
                       "Paper: 999 kN (its hull parameters are not published).\n\n",

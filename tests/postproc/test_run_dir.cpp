@@ -1,1 +1,196 @@
+// brash-post on synthetic run directories: report.json values, bad input, runs still being written.
+#include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include <brash/error.hpp>
+#include <brash/post/report.hpp>
+
+#include "synthetic_run.hpp"
+
+using namespace brash::post;
+using brash::post::testing::SyntheticRun;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratch(const std::string& name) {
+  return fs::temp_directory_path() / fmt::format("brash_post_test_{}_{}", ::getpid(), name);
+}
+
+nlohmann::json run_cli(const fs::path& dir) {
+  const auto cmd = fmt::format("{} {} > {} 2>&1", BRASH_POST_EXE, dir.string(), (dir / "cli.log").string());
+  EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  std::ifstream in(dir / "report.json");
+  return nlohmann::json::parse(in);
+}
+
+// Expects analyze_run to throw InputError whose message contains every string of `parts`.
+void expect_input_error(const fs::path& dir, std::initializer_list<std::string> parts) {
+  try {
+    (void)analyze_run(dir);
+    ADD_FAILURE() << "no InputError";
+  } catch (const brash::InputError& e) {
+    for (const auto& p : parts) EXPECT_NE(std::string(e.what()).find(p), std::string::npos) << e.what() << " lacks " << p;
+  }
+}
+
+void replace_line(const fs::path& file, int line_1based, const std::string& text) {
+  std::ifstream in(file);
+  std::string all, line;
+  for (int i = 1; std::getline(in, line); ++i) all += (i == line_1based ? text : line) + "\n";
+  in.close();
+  brash::post::testing::write_text(file, all);
+}
+
+}  // namespace
+
+TEST(RunDir, ReportJsonHasEveryKeyWithCorrectValues) {
+  const auto dir = scratch("complete");
+  SyntheticRun r;
+  write_synthetic_run(dir, r);
+  const auto j = run_cli(dir);
+
+  const double mean_fx = brash::post::testing::window_mean(r.t_s, r.fx_N, 15.0, 40.0);
+  const double mean_fy = brash::post::testing::window_mean(r.t_s, r.fy_N_series, 15.0, 40.0);
+  const double mean_fz = brash::post::testing::window_mean(r.t_s, r.fz_N_series, 15.0, 40.0);
+  EXPECT_EQ(j["engine"], "synthetic");
+  EXPECT_EQ(j["fluid_model"], "added_mass");
+  EXPECT_NEAR(j["window_s"][0].get<double>(), 15.0, 1e-9);
+  EXPECT_NEAR(j["window_s"][1].get<double>(), 40.0, 1e-9);
+  EXPECT_FALSE(j["window_truncated"].get<bool>());
+  EXPECT_TRUE(j["complete"].get<bool>());
+  const auto& R = j["resistance_model_N"];
+  EXPECT_NEAR(R["mean"].get<double>(), -mean_fx, 1e-9);
+  EXPECT_NEAR(R["x"].get<double>(), mean_fx, 1e-9);
+  EXPECT_NEAR(R["y"].get<double>(), mean_fy, 1e-9);
+  EXPECT_NEAR(R["z"].get<double>(), mean_fz, 1e-9);
+  EXPECT_NEAR(R["mean"].get<double>(), 2.0, 0.05);  // the plateau value written
+  // AR(1) phi 0.8, sd 0.3, 2501 samples: exact sd of the mean = 0.3 sqrt((1+phi)/(1-phi)/N) = 0.018.
+  const double sem_exact = 0.3 * std::sqrt(1.8 / 0.2 / 2501);
+  EXPECT_GT(R["ci95"].get<double>(), 1.96 * sem_exact * 0.6);
+  EXPECT_LT(R["ci95"].get<double>(), 1.96 * sem_exact * 1.6);
+  EXPECT_EQ(j["lambda"].get<double>(), 28.5);
+  EXPECT_NEAR(j["resistance_full_kN"].get<double>(), -mean_fx * std::pow(28.5, 3) / 1000, 1e-6);
+  EXPECT_NEAR(j["fsicr"]["R_CH_kN"].get<double>(), 990.29, 0.01);  // fsicr.md worked example 1
+  EXPECT_NEAR(j["fsicr"]["params"]["L_m"].get<double>(), 199.11, 1e-9);
+  EXPECT_NEAR(j["fsicr"]["params"]["B_m"].get<double>(), 32.0, 1e-9);
+  EXPECT_NEAR(j["fsicr"]["params"]["T_m"].get<double>(), 11.733, 1e-9);
+  EXPECT_EQ(j["fsicr"]["source"]["alpha_deg"], "override");
+  EXPECT_EQ(j["fsicr"]["source"]["L_m"], "case");
+  EXPECT_NEAR(j["fsicr"]["intermediate"]["H_F_m"].get<double>(), 5.917, 5e-4);
+  EXPECT_NEAR(j["ratio_fsicr_to_sim"].get<double>(),
+              j["fsicr"]["R_CH_kN"].get<double>() / j["resistance_full_kN"].get<double>(), 1e-12);
+  EXPECT_EQ(j["wall_time_s"].get<double>(), 123.5);
+  EXPECT_EQ(j["particle_steps"].get<double>(), 4.2e9);
+  for (const auto* f : {"report.md", "force_history.csv", "blocking.csv"}) EXPECT_TRUE(fs::exists(dir / f)) << f;
+  fs::remove_all(dir);
+}
+
+TEST(RunDir, ShortRunShortensWindowAndSaysSo) {
+  const auto dir = scratch("short");
+  SyntheticRun r;
+  r.duration_s = 30.0;
+  write_synthetic_run(dir, r);
+  const auto a = analyze_run(dir);
+  EXPECT_TRUE(a.window.truncated);
+  EXPECT_NEAR(a.window.used_s[1], 30.0, 1e-9);
+  EXPECT_NEAR(a.resistance.mean, -brash::post::testing::window_mean(r.t_s, r.fx_N, 15.0, 30.0), 1e-9);
+  const auto j = report_json(a);
+  EXPECT_TRUE(j["window_truncated"].get<bool>());
+  EXPECT_FALSE(j["complete"].get<bool>());
+  ASSERT_FALSE(a.notes.empty());
+  EXPECT_NE(report_markdown(a).find("before the window end"), std::string::npos);
+
+  // Shorter than the window start: last half of the record, flagged as fallback.
+  SyntheticRun s;
+  s.duration_s = 10.0;
+  write_synthetic_run(dir, s);
+  const auto b = analyze_run(dir);
+  EXPECT_TRUE(b.window.fallback);
+  EXPECT_NEAR(b.window.used_s[0], 5.0, 1e-9);
+  EXPECT_NE(report_markdown(b).find("NOT the paper's window"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST(RunDir, RunStillBeingWrittenUsesCompleteRecordsOnly) {
+  const auto dir = scratch("running");
+  SyntheticRun r;
+  r.status = "running";
+  r.truncated_tail = true;
+  write_synthetic_run(dir, r);
+  const auto a = analyze_run(dir);
+  EXPECT_TRUE(a.force.tail_dropped);
+  EXPECT_EQ(a.force.t_s.size(), r.t_s.size());
+  EXPECT_NEAR(a.resistance.mean, -brash::post::testing::window_mean(r.t_s, r.fx_N, 15.0, 40.0), 1e-9);
+  const auto j = report_json(a);
+  EXPECT_FALSE(j["complete"].get<bool>());
+  EXPECT_TRUE(j["record"]["incomplete_tail_dropped"].get<bool>());
+  bool said = false;
+  for (const auto& n : j["notes"]) said |= n.get<std::string>().find("last line incomplete") != std::string::npos;
+  EXPECT_TRUE(said);
+
+  // The same truncated line in a run that claims to be complete is an error naming file and line.
+  r.status = "complete";
+  write_synthetic_run(dir, r);
+  expect_input_error(dir, {"hull_force.csv:4503:", "2 fields"});
+  fs::remove_all(dir);
+}
+
+TEST(RunDir, BadForceCsvNamesFileAndLine) {
+  const auto dir = scratch("bad");
+  SyntheticRun r;
+  write_synthetic_run(dir, r);
+  const auto csv = dir / "hull_force.csv";
+  replace_line(csv, 7, "0.05,abc,0,0");
+  expect_input_error(dir, {"hull_force.csv:7:", "fx_N", "'abc' is not a number"});
+
+  write_synthetic_run(dir, r);
+  replace_line(csv, 9, "0.07,1,2");
+  expect_input_error(dir, {"hull_force.csv:9:", "3 fields, expected 4"});
+
+  write_synthetic_run(dir, r);
+  replace_line(csv, 11, "0.09,1,nan,2");
+  expect_input_error(dir, {"hull_force.csv:11:", "fy_N", "not finite"});
+
+  write_synthetic_run(dir, r);
+  replace_line(csv, 1, "time,fx,fy,fz");
+  expect_input_error(dir, {"hull_force.csv:1:", "header"});
+
+  write_synthetic_run(dir, r);
+  replace_line(csv, 20, "0.01,1,2,3");
+  expect_input_error(dir, {"hull_force.csv:20:", "does not increase"});
+
+  // CLI: exit status 2 and the message on stderr.
+  const auto cmd = fmt::format("{} {} > /dev/null 2>&1", BRASH_POST_EXE, dir.string());
+  EXPECT_EQ(WEXITSTATUS(std::system(cmd.c_str())), 2);
+  fs::remove_all(dir);
+}
+
+TEST(RunDir, MeasuredHullGivesFsicrParameters) {
+#ifdef BRASH_JBC_MODEL_STL
+  PostCase c;
+  c.hull_file = BRASH_JBC_MODEL_STL;
+  c.draft_m = 0.4125;
+  c.lpp_m = 7.0;
+  c.beam_m = 1.125;
+  c.scale_lambda = 28.5;
+  if (!fs::exists(c.hull_file)) GTEST_SKIP() << "JBC model STL not generated: " << c.hull_file;
+  std::vector<std::string> notes;
+  const auto m = measure_case_hull_full_scale(c, notes);
+  ASSERT_TRUE(m.has_value()) << (notes.empty() ? "" : notes.front());
+  EXPECT_NEAR(m->L_m, 199.5, 1e-9);  // 7.0 * 28.5
+  EXPECT_NEAR(m->B_m, 1.125 * 28.5, 0.02 * 32);
+  const auto s = resolve_fsicr(c, m);
+  ASSERT_TRUE(s.result.has_value());
+  EXPECT_EQ(s.source.at("alpha_deg"), "measured");
+  EXPECT_GT(s.result->R_CH_N, 300e3);
+  EXPECT_LT(s.result->R_CH_N, 3000e3);
+#else
+  GTEST_SKIP() << "built without brash_hull";
+#endif
+}

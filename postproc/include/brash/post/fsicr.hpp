@@ -2,6 +2,7 @@
 // Formula, constants and confidence tags: ../shared/notes/fsicr.md. Every constant lives in
 // FsicrConstants so a corrected rule text changes one place.
 #pragma once
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -42,9 +43,11 @@ struct FsicrResult {
 // psi = atan(tan(phi2) / sin(alpha)) in degrees (90 when phi2 = 90).
 double fsicr_psi_deg(double alpha_deg, double phi2_deg);
 
-// R_CH and its intermediates. p.psi_deg is ignored (recomputed from alpha, phi2).
+// R_CH and its intermediates. p.psi_deg is ignored: psi is recomputed from alpha and phi2 unless
+// psi_override_deg is given (a case's fsicr.psi_deg).
 FsicrResult fsicr_channel_resistance(const FsicrParams& p, IceClass ice_class,
-                                     const FsicrConstants& k = {});
+                                     const FsicrConstants& k = {},
+                                     std::optional<double> psi_override_deg = std::nullopt);
 
 // Human-readable warnings for parameters outside the formula's validity range.
 std::vector<std::string> fsicr_validity_warnings(const FsicrParams& p);

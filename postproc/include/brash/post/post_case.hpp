@@ -1,5 +1,5 @@
-// The few case.yaml values the postprocessor needs. This is an adapter: read_post_case() will be
-// reimplemented on brash::load_case() (brash_case) once it exists; nothing else reads YAML.
+// The few case.yaml values the postprocessor needs, read through brash::load_case (brash_case), so
+// a run's case.yaml gets the same validation as everywhere else (InputError naming file, key, line).
 #pragma once
 #include <array>
 #include <filesystem>
@@ -18,10 +18,12 @@ struct PostCase {
   std::string ice_class = "IA";
   std::string fluid_model;
   double duration_s = 0;
+  double channel_width_m = 0, water_level_m = 0;
   std::array<double, 2> window_s{15.0, 40.0};
-  // fsicr: overrides (full scale), keyed like FsicrParams fields: L_m, B_m, T_m, alpha_deg,
-  // phi1_deg, phi2_deg, L_par_m, L_bow_m, A_wf_m2.
+  // fsicr: overrides (full scale), keyed like FsicrParams fields: alpha_deg, phi1_deg, phi2_deg,
+  // L_par_m, L_bow_m, A_wf_m2.
   std::map<std::string, double> fsicr_overrides;
+  std::optional<double> psi_override_deg;  // otherwise psi = atan(tan phi2 / sin alpha)
 };
 
 PostCase read_post_case(const std::filesystem::path& case_yaml);

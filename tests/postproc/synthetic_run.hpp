@@ -1,0 +1,122 @@
+// Writes a synthetic run directory in the layout of docs/case_format.md, with known numbers, for the
+// postprocessor tests. Header-only test helper.
+#pragma once
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+namespace brash::post::testing {
+
+struct SyntheticRun {
+  double duration_s = 45.0, dt_s = 0.01;
+  double mean_resistance_N = 2.0;     // plateau value of -fx
+  double fy_N = 0.1, fz_N = -0.5;     // plateau values of fy, fz
+  double noise_N = 0.3, phi = 0.8;    // AR(1) noise on every component
+  std::string status = "complete";
+  bool truncated_tail = false;        // last line cut without newline
+  std::vector<double> snapshot_times_s{0.0, 20.0, 40.0};
+  int particles = 60;
+  // Written values (read back by the tests).
+  std::vector<double> t_s, fx_N, fy_N_series, fz_N_series;
+};
+
+inline void write_text(const std::filesystem::path& p, const std::string& s) {
+  std::ofstream out(p, std::ios::binary);
+  out << s;
+}
+
+// Case: the fsicr.md Panamax at 1:28.5 (so case dimensions * lambda = L 199.11, B 32, T 11.733) with
+// every bow parameter overridden to the first worked example (R_CH = 990 kN). The hull file does not
+// exist, so nothing is measured.
+inline std::string synthetic_case_yaml(double window_t1_s = 40.0) {
+  return fmt::format(R"(name: synthetic
+description: "postproc test"
+hull:
+  file: no_such_hull.stl
+  draft_m: {}
+  lpp_m: {}
+  beam_m: {}
+  start_x_m: -1.0
+ship:
+  speed_m_s: 0.482
+  scale_lambda: 28.5
+  ice_class: IA
+channel:
+  length_m: 21.0
+  width_m: 2.25
+fluid:
+  model: added_mass
+run:
+  duration_s: 45.0
+  window_s: [15.0, {}]
+fsicr:
+  alpha_deg: 25
+  phi1_deg: 90
+  phi2_deg: 60
+  L_par_m: 100
+  L_bow_m: 40
+  A_wf_m2: 900
+)", 11.733 / 28.5, 199.11 / 28.5, 32.0 / 28.5, window_t1_s);
+}
+
+inline void write_synthetic_run(const std::filesystem::path& dir, SyntheticRun& r) {
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "particles");
+  write_text(dir / "case.yaml", synthetic_case_yaml());
+  write_text(dir / "meta.json", fmt::format(R"({{"engine": "synthetic", "engine_version": "1.0", "fluid_model": "added_mass",
+ "treatment": "implicit", "dt_s": 5e-5, "ranks": 2, "particles": {}, "wall_time_s": 123.5,
+ "particle_steps": 4.2e9, "git_commit": "abc", "status": "{}", "reason": ""}})", r.particles, r.status));
+
+  std::mt19937_64 rng(42);
+  std::normal_distribution<double> e(0, 1);
+  double nx = 0, ny = 0, nz = 0;
+  const double s = r.noise_N * std::sqrt(1 - r.phi * r.phi);
+  std::string csv = "t_s,fx_N,fy_N,fz_N\n";
+  const int n = static_cast<int>(std::lround(r.duration_s / r.dt_s));
+  for (int i = 0; i <= n; ++i) {
+    const double t = i * r.dt_s;
+    const double ramp = std::min(1.0, t / 10.0);  // bow entering the ice
+    nx = r.phi * nx + s * e(rng);
+    ny = r.phi * ny + s * e(rng);
+    nz = r.phi * nz + s * e(rng);
+    r.t_s.push_back(t);
+    r.fx_N.push_back(-(r.mean_resistance_N * ramp + nx));
+    r.fy_N_series.push_back(r.fy_N * ramp + ny);
+    r.fz_N_series.push_back(r.fz_N * ramp + nz);
+    csv += fmt::format("{},{},{},{}\n", t, r.fx_N.back(), r.fy_N_series.back(), r.fz_N_series.back());
+  }
+  if (r.truncated_tail) csv += fmt::format("{},-1.2", (n + 1) * r.dt_s);  // being written
+  write_text(dir / "hull_force.csv", csv);
+
+  std::string index = "step,t_s,file,hull_x_m\n";
+  for (std::size_t k = 0; k < r.snapshot_times_s.size(); ++k) {
+    const double t = r.snapshot_times_s[k];
+    const long step = std::lround(t / 5e-5);
+    const auto file = fmt::format("particles_{}.csv", step);
+    index += fmt::format("{},{},{},{}\n", step, t, file, -1.0 + 0.482 * t);
+    std::string p = "id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z\n";
+    for (int i = 0; i < r.particles; ++i) {
+      const double x = 0.1 * i + 0.01 * t, y = -1.0 + 0.03 * i, z = -0.005 * (i % 3);
+      p += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{}\n", i, x, y, z, 0.0088, 0.01 * i, 0.0, -0.001 * i,
+                       0.9 + 0.001 * (i % 10), 0.5, 0.5, i % 2 ? 0.0 : 0.5);
+    }
+    write_text(dir / "particles" / file, p);
+  }
+  write_text(dir / "particles" / "index.csv", index);
+}
+
+// Mean of v over samples with t in [t0, t1].
+inline double window_mean(const std::vector<double>& t, const std::vector<double>& v, double t0, double t1) {
+  double s = 0;
+  int n = 0;
+  for (std::size_t i = 0; i < t.size(); ++i)
+    if (t[i] >= t0 && t[i] <= t1) s += v[i], ++n;
+  return s / n;
+}
+
+}  // namespace brash::post::testing
