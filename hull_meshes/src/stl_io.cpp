@@ -26,6 +26,7 @@ namespace fs = std::filesystem;
 }
 
 std::string read_all(const fs::path& file) {
+  if (fs::is_directory(file)) fail(file, "is a directory, not a mesh file");
   std::ifstream in(file, std::ios::binary);
   if (!in) fail(file, "cannot open the file (missing or unreadable)");
   std::ostringstream ss;
@@ -137,6 +138,7 @@ std::string lower_ext(const fs::path& file) {
 Mesh read_with_meshio(const fs::path& file) {
   static std::atomic<int> counter{0};
   if (!fs::exists(file)) fail(file, "cannot open the file (missing)");
+  if (fs::is_directory(file)) fail(file, "is a directory, not a mesh file");
   const fs::path tmp = fs::temp_directory_path() / fmt::format("brash_hull_{}_{}.stl", ::getpid(), counter++);
   const std::string py =
       "import sys, meshio, numpy as np\n"
