@@ -1,0 +1,145 @@
+// Tests of the case folders (every cases/*/case.yaml loads; the quick case is small) and of the
+// brash-pack and brash-case commands (run as processes, as a user would).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <sys/wait.h>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <unistd.h>
+
+#include "brash/case.hpp"
+#include "brash/error.hpp"
+#include "brash/packing.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kRepo = BRASH_SOURCE_DIR;
+const fs::path kBin = BRASH_BIN_DIR;
+
+fs::path temp_dir(const std::string& tag) {
+  const fs::path d = fs::temp_directory_path() / ("brash_test_cases_" + tag + "_" + std::to_string(::getpid()));
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+// Runs a command, returns its exit code; stdout+stderr go to `log`.
+int run(const std::string& cmd, const fs::path& log) {
+  const int rc = std::system((cmd + " > '" + log.string() + "' 2>&1").c_str());
+  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+}
+
+std::string slurp(const fs::path& f) {
+  std::ifstream in(f);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+}  // namespace
+
+TEST(CaseFolders, EveryCommittedCaseLoads) {
+  int n = 0;
+  for (const auto& e : fs::directory_iterator(kRepo / "cases")) {
+    if (!fs::exists(e.path() / "case.yaml")) continue;
+    const brash::Case c = brash::load_case(e.path() / "case.yaml");
+    EXPECT_EQ(c.name, e.path().filename().string());
+    EXPECT_EQ(c.hull.file.filename(), "jbc_panamax_model.stl");
+    ++n;
+  }
+  EXPECT_GE(n, 2);
+}
+
+TEST(CaseFolders, QuickCaseIsSmallAndShort) {
+  const brash::Case c = brash::load_case(kRepo / "cases/jbc_quick/case.yaml");
+  EXPECT_DOUBLE_EQ(c.ship.speed_m_s, 0.482);
+  EXPECT_LE(c.run.duration_s, 5.0);
+  EXPECT_GT(c.run.window_s[0], 0.0);
+  auto q = brash::packing_request(c, "jbc_quick");
+  const auto p = brash::generate_packing(q);
+  EXPECT_GT(p.stats.count, 5000u);
+  EXPECT_LT(p.stats.count, 10000u);
+  EXPECT_GT(c.channel.width_m, c.hull.beam_m + 4 * c.ice.diameter_mean_m);  // ice beside the hull
+}
+
+TEST(BrashPack, WritesCsvAndJsonForACase) {
+  const fs::path dir = temp_dir("pack");
+  fs::copy_file(kRepo / "cases/jbc_quick/case.yaml", dir / "case.yaml");
+  const std::string pack = (kBin / "brash-pack").string();
+  ASSERT_EQ(run(pack + " " + dir.string(), dir / "log.txt"), 0) << slurp(dir / "log.txt");
+  const fs::path csv = dir / "generated/packing.csv", json = dir / "generated/packing.json";
+  ASSERT_TRUE(fs::exists(csv));
+  ASSERT_TRUE(fs::exists(json));
+  const auto spheres = brash::read_packing_csv(csv);
+  const auto j = nlohmann::json::parse(slurp(json));
+  EXPECT_EQ(j.at("count").get<std::size_t>(), spheres.size());
+  EXPECT_EQ(j.at("mode").get<std::string>(), "volume");
+  EXPECT_LT(j.at("max_overlap_over_d").get<double>(), 1e-6);
+  // --out and a second run: identical bytes.
+  ASSERT_EQ(run(pack + " " + dir.string() + " --out " + (dir / "again.csv").string(), dir / "log2.txt"), 0);
+  EXPECT_EQ(slurp(dir / "again.csv"), slurp(csv));
+  // Strict mode with the paper porosity is impossible: exit 2, message names the file and the key.
+  EXPECT_EQ(run(pack + " " + dir.string() + " --mode strict_two_layer --out " + (dir / "s.csv").string(),
+                dir / "log3.txt"),
+            2);
+  const std::string err = slurp(dir / "log3.txt");
+  EXPECT_NE(err.find("case.yaml"), std::string::npos) << err;
+  EXPECT_NE(err.find("ice.porosity"), std::string::npos) << err;
+  EXPECT_FALSE(fs::exists(dir / "s.csv"));
+}
+
+TEST(BrashCase, NewCaseFromParameters) {
+  const fs::path dir = temp_dir("new");
+  const std::string cmd = (kBin / "brash-case").string() + " new my_case --cases-dir " + dir.string() +
+                          " --speed 0.3 --scale 28.5 --width 1.8 --thickness 0.05 --diameter 0.025"
+                          " --friction-ice 1.0 --friction-hull 0.05 --fluid-model drag --treatment explicit"
+                          " --duration 10";
+  ASSERT_EQ(run(cmd, dir / "log.txt"), 0) << slurp(dir / "log.txt");
+  const brash::Case c = brash::load_case(dir / "my_case/case.yaml");
+  EXPECT_EQ(c.name, "my_case");
+  EXPECT_DOUBLE_EQ(c.ship.speed_m_s, 0.3);
+  EXPECT_DOUBLE_EQ(c.ship.scale_lambda, 28.5);
+  EXPECT_DOUBLE_EQ(c.hull.lpp_m, 7.0);
+  EXPECT_DOUBLE_EQ(c.channel.width_m, 1.8);
+  EXPECT_DOUBLE_EQ(c.channel.length_m, 21.0);  // from the template (the paper case)
+  EXPECT_DOUBLE_EQ(c.ice.thickness_m, 0.05);
+  EXPECT_DOUBLE_EQ(c.ice.diameter_mean_m, 0.025);
+  EXPECT_DOUBLE_EQ(c.ice.diameter_sd_m, 0.00125);
+  EXPECT_DOUBLE_EQ(c.friction.ice_ice, 1.0);
+  EXPECT_DOUBLE_EQ(c.friction.ice_wall, 1.0);
+  EXPECT_DOUBLE_EQ(c.friction.ice_hull, 0.05);
+  EXPECT_EQ(c.fluid.model, brash::FluidModel::Drag);
+  EXPECT_EQ(c.fluid.treatment, brash::Treatment::Explicit);
+  EXPECT_DOUBLE_EQ(c.run.duration_s, 10.0);
+  EXPECT_DOUBLE_EQ(c.run.window_s[0], 4.0);
+  EXPECT_DOUBLE_EQ(c.run.window_s[1], 10.0);
+  EXPECT_EQ(c.ice.packing_file, fs::absolute(dir / "my_case/generated/packing.csv").lexically_normal());
+  // Existing case: refused without --force.
+  EXPECT_EQ(run(cmd, dir / "log2.txt"), 2);
+  EXPECT_NE(slurp(dir / "log2.txt").find("exists"), std::string::npos);
+  // Froude scaling with --scale: hull and speed follow.
+  ASSERT_EQ(run((kBin / "brash-case").string() + " new s40 --cases-dir " + dir.string() + " --scale 40",
+                dir / "log3.txt"), 0) << slurp(dir / "log3.txt");
+  const brash::Case s = brash::load_case(dir / "s40/case.yaml");
+  EXPECT_NEAR(s.hull.lpp_m, 7.0 * 28.5 / 40, 1e-9);
+  EXPECT_NEAR(s.ship.speed_m_s, 0.482 * std::sqrt(28.5 / 40), 1e-9);
+}
+
+TEST(BrashCase, InvalidValueLeavesNoFolder) {
+  const fs::path dir = temp_dir("bad");
+  EXPECT_EQ(run((kBin / "brash-case").string() + " new bad --cases-dir " + dir.string() + " --fluid-model potential",
+                dir / "log.txt"),
+            2);
+  const std::string err = slurp(dir / "log.txt");
+  EXPECT_NE(err.find("fluid.model"), std::string::npos) << err;
+  EXPECT_NE(err.find("case.yaml"), std::string::npos) << err;
+  EXPECT_FALSE(fs::exists(dir / "bad"));
+  EXPECT_EQ(run((kBin / "brash-case").string() + " new x --cases-dir " + dir.string() + " --porosity 1.5",
+                dir / "log2.txt"),
+            2);
+  EXPECT_NE(slurp(dir / "log2.txt").find("ice.porosity"), std::string::npos);
+}
