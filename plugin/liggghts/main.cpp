@@ -11,6 +11,9 @@
 #include "register_style.h"
 
 int main(int argc, char** argv) {
+  // Line-buffered screen: error->one ends in MPI_Abort without flushing, which would swallow the
+  // ERROR message (and everything before it) whenever stdout is a pipe or a file.
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
   MPI_Init(&argc, &argv);
   for (int i = 1; i < argc; i++) {
     if (std::strcmp(argv[i], "--version") == 0 || std::strcmp(argv[i], "-V") == 0) {
