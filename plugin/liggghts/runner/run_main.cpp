@@ -158,7 +158,7 @@ int main(int argc, char** argv) {
   int ranks = 1;
   double duration = -1;
   std::string model, treatment;
-  bool no_post = false;
+  bool no_post = false, prepare_only = false;
   app.add_option("case_dir", case_dir, "case folder holding case.yaml")->required();
   app.add_option("--np", ranks, "MPI ranks")->check(CLI::Range(1, 1024));
   app.add_option("--out", out_dir, "run directory (default: runs/<case>-liggghts-<model>-<stamp>)");
@@ -167,6 +167,7 @@ int main(int argc, char** argv) {
   app.add_option("--model", model, "override fluid.model: drag | added_mass | both");
   app.add_option("--treatment", treatment, "override fluid.treatment: implicit | explicit");
   app.add_flag("--no-post", no_post, "do not run brash-post afterwards");
+  app.add_flag("--prepare-only", prepare_only, "write the run directory's inputs (in.lmp, packing.data, hull.stl) and stop");
   CLI11_PARSE(app, argc, argv);
 
   fs::path run_dir;
@@ -233,6 +234,10 @@ int main(int argc, char** argv) {
     opt.restart_every_steps = std::max(1L, std::lround(run_duration / 10 / c.run.timestep_s));
     brash::run::write_atomic(run_dir / "in.lmp", brash::liggghts::input_script(c, box, opt));
 
+    if (prepare_only) {
+      std::cout << run_dir.string() << "\n";
+      return 0;
+    }
     meta = {{"engine", "liggghts"},
             {"engine_version", "LIGGGHTS 3.8.0 (Debian libliggghts) + fix icefluid"},
             {"fluid_model", to_string(c.fluid.model)},
