@@ -10,16 +10,74 @@
 #include <brash/error.hpp>
 #include <brash/post/atomic_write.hpp>
 #include <brash/post/fsicr.hpp>
+#include <brash/post/particles.hpp>
+#include <brash/post/plots.hpp>
 #include <brash/post/report.hpp>
+#ifdef BRASH_POST_HAVE_VTK
+#include <brash/post/paraview.hpp>
+#endif
 
 namespace fs = std::filesystem;
 using namespace brash::post;
 
 namespace {
 
-int run_report(const fs::path& run_dir) {
-  const auto a = analyze_run(run_dir);
-  write_file_atomic(run_dir / "report.json", report_json(a).dump(2) + "\n");
+struct ReportOptions {
+  bool plots = true, paraview = true;
+  std::vector<double> snapshot_times_s;  // empty: start, middle and end of the averaging window
+};
+
+// Runs one output step; a failure becomes a note in the report (and exit status 1), not an abort,
+// so the numbers are still written.
+template <class F>
+bool step(RunAnalysis& a, std::vector<std::string>& outputs, const char* what, F&& f) {
+  try {
+    for (const auto& p : f()) outputs.push_back(fs::relative(p, a.run_dir).string());
+    return true;
+  } catch (const std::exception& e) {
+    a.notes.push_back(fmt::format("{} failed: {}", what, e.what()));
+    return false;
+  }
+}
+
+int run_report(const fs::path& run_dir, const ReportOptions& opt) {
+  auto a = analyze_run(run_dir);
+  const auto work = run_dir / "post";
+  std::vector<std::string> outputs{"report.json", "report.md", "force_history.csv", "blocking.csv"};
+  bool ok = true;
+  const auto entries = read_snapshot_index(run_dir / "particles", a.meta.in_progress());
+  if (opt.plots) {
+    ok &= step(a, outputs, "force history plot", [&] { return std::vector{plot_force_history(a, run_dir, work)}; });
+    ok &= step(a, outputs, "resistance bar chart", [&] { return std::vector{plot_resistance_bars(a, run_dir, work)}; });
+    ok &= step(a, outputs, "ice views", [&] {
+      auto times = opt.snapshot_times_s;
+      if (times.empty()) times = {a.window.used_s[0], 0.5 * (a.window.used_s[0] + a.window.used_s[1]), a.window.used_s[1]};
+      std::vector<fs::path> pngs;
+      for (const auto i : nearest_snapshots(entries, times)) {
+        const auto& e = entries[i];
+        if (!fs::exists(e.file)) continue;
+        pngs.push_back(plot_ice_views(read_snapshot(e.file, a.meta.in_progress()), e, a.case_, run_dir, work));
+      }
+      if (entries.empty()) a.notes.push_back("no particle snapshots (particles/index.csv missing or empty): no ice views");
+      return pngs;
+    });
+  }
+#ifdef BRASH_POST_HAVE_VTK
+  if (opt.paraview && !entries.empty()) {
+    ok &= step(a, outputs, "ParaView output", [&] {
+      const auto hull = load_case_hull(a.case_, a.notes);
+      const auto pv = write_paraview(run_dir, entries, hull, a.case_, a.meta.in_progress(), a.notes);
+      std::vector<fs::path> files{pv.particles_pvd};
+      if (!pv.hull_pvd.empty()) files.push_back(pv.hull_pvd);
+      return files;
+    });
+  }
+#else
+  if (opt.paraview) a.notes.push_back("ParaView output skipped: brash-post was built without VTK");
+#endif
+  auto j = report_json(a);
+  j["outputs"] = outputs;
+  write_file_atomic(run_dir / "report.json", j.dump(2) + "\n");
   write_file_atomic(run_dir / "report.md", report_markdown(a));
   write_file_atomic(run_dir / "force_history.csv", force_history_csv(a));
   write_file_atomic(run_dir / "blocking.csv", blocking_csv(a.resistance));
@@ -29,6 +87,19 @@ int run_report(const fs::path& run_dir) {
   fmt::print("\n");
   for (const auto& n : a.notes) fmt::print("note: {}\n", n);
   for (const auto& w : a.fsicr.warnings) fmt::print("fsicr warning: {}\n", w);
+  return ok ? 0 : 1;
+}
+
+int run_compare(const std::vector<fs::path>& runs, const fs::path& out) {
+  std::vector<CompareRow> rows;
+  for (const auto& r : runs) rows.push_back(compare_row(analyze_run(r)));
+  fs::create_directories(out);
+  const auto md = compare_markdown(rows);
+  write_file_atomic(out / "compare.md", md);
+  write_file_atomic(out / "compare.csv", compare_csv(rows));
+  plot_compare(rows, out, out / "post");
+  fmt::print("{}", md);
+  fmt::print("wrote {}, {}, {}\n", (out / "compare.md").string(), (out / "compare.csv").string(), (out / "compare.png").string());
   return 0;
 }
 
@@ -66,14 +137,30 @@ int main(int argc, char** argv) {
   fsicr->add_option("--Awf", p.A_wf_m2, "bow waterline area [m^2]")->required();
   fsicr->add_option("--class", ice_class, "ice class IA_super | IA | IB | IC")->capture_default_str();
 
+  ReportOptions ropt;
+  bool no_plots = false, no_paraview = false;
+  app.add_flag("--no-plots", no_plots, "skip the PNG plots");
+  app.add_flag("--no-paraview", no_paraview, "skip the .pvd/.vtu files");
+  app.add_option("--snapshot-times", ropt.snapshot_times_s, "times [s] of the ice views (nearest snapshots); default: window start, middle, end")
+      ->delimiter(',');
+
+  auto* compare = app.add_subcommand("compare", "one table (markdown + CSV) and one plot across runs");
+  std::vector<fs::path> compare_runs;
+  fs::path compare_out = ".";
+  compare->add_option("RUN_DIR", compare_runs, "run directories")->required()->check(CLI::ExistingDirectory);
+  compare->add_option("--out", compare_out, "output folder")->capture_default_str();
+
   CLI11_PARSE(app, argc, argv);
+  ropt.plots = !no_plots;
+  ropt.paraview = !no_paraview;
   try {
     if (fsicr->parsed()) return run_fsicr(p, ice_class);
+    if (compare->parsed()) return run_compare(compare_runs, compare_out);
     if (run_dir.empty()) {
       std::cerr << app.help();
       return 2;
     }
-    return run_report(run_dir);
+    return run_report(run_dir, ropt);
   } catch (const brash::InputError& e) {
     fmt::print(stderr, "brash-post: input error: {}\n", e.what());
     return 2;

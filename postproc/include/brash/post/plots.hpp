@@ -1,0 +1,43 @@
+// PNG plots with gnuplot (pngcairo): each plot writes a data file and a script into a work folder,
+// runs gnuplot as a subprocess (exit status checked) into a temp PNG and renames it into place.
+#pragma once
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <brash/post/particles.hpp>
+#include <brash/post/report.hpp>
+
+namespace brash::post {
+
+// Runs `gnuplot script`; std::runtime_error with the log tail when gnuplot fails or is missing.
+void run_gnuplot(const std::filesystem::path& script);
+
+// Fig. 5 analog: fx, fy, fz of the ice on the hull vs time, averaging window shaded, mean marked.
+std::filesystem::path plot_force_history(const RunAnalysis& a, const std::filesystem::path& out_dir,
+                                         const std::filesystem::path& work_dir);
+
+// Fig. 6 analog: full-scale resistance of the simulation (with CI) vs FSICR R_CH, paper values beside.
+std::filesystem::path plot_resistance_bars(const RunAnalysis& a, const std::filesystem::path& out_dir,
+                                           const std::filesystem::path& work_dir);
+
+// Fig. 4 analog: top view (coloured by speed, topmost drawn last) and bottom view (coloured by
+// submerged fraction, lowest drawn last) of the ice around the hull at one snapshot.
+std::filesystem::path plot_ice_views(const Snapshot& s, const SnapshotEntry& e, const PostCase& c,
+                                     const std::filesystem::path& out_dir, const std::filesystem::path& work_dir);
+
+struct CompareRow {
+  std::string run, engine, fluid_model;
+  double speed_m_s = 0, mean_N = 0, ci95_N = 0, full_kN = 0, full_ci95_kN = 0;
+  double R_CH_kN = NAN, ratio = NAN;
+  bool complete = false;
+};
+CompareRow compare_row(const RunAnalysis& a);
+std::string compare_markdown(const std::vector<CompareRow>& rows);
+std::string compare_csv(const std::vector<CompareRow>& rows);
+// Bar chart of the full-scale resistance per run (with CI) and FSICR R_CH.
+std::filesystem::path plot_compare(const std::vector<CompareRow>& rows, const std::filesystem::path& out_dir,
+                                   const std::filesystem::path& work_dir);
+
+}  // namespace brash::post

@@ -1,0 +1,68 @@
+// Particle snapshot reading.
+#include <brash/post/particles.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include <brash/error.hpp>
+#include <brash/post/csv.hpp>
+
+namespace brash::post {
+
+std::vector<SnapshotEntry> read_snapshot_index(const std::filesystem::path& dir, bool run_in_progress) {
+  static constexpr std::array<std::string_view, 4> kHeader{"step", "t_s", "file", "hull_x_m"};
+  const auto path = dir / "index.csv";
+  std::vector<SnapshotEntry> out;
+  if (!std::filesystem::exists(path)) return out;
+  const auto text = read_text_file(path);
+  scan_csv(path, text, kHeader, run_in_progress, [&](std::size_t line, std::span<const std::string_view> f) {
+    SnapshotEntry e;
+    const double step = parse_finite(f[0], path, line, kHeader[0]);
+    if (step < 0 || step != std::floor(step))
+      throw InputError(fmt::format("{}:{}: column 'step': '{}' is not a non-negative integer", path.string(), line, f[0]));
+    e.step = static_cast<long long>(step);
+    e.t_s = parse_finite(f[1], path, line, kHeader[1]);
+    if (f[2].empty() || f[2].find('/') != std::string_view::npos)
+      throw InputError(fmt::format("{}:{}: column 'file': '{}' must be a file name in particles/", path.string(), line, f[2]));
+    e.file = dir / std::string(f[2]);
+    e.hull_x_m = parse_finite(f[3], path, line, kHeader[3]);
+    out.push_back(e);
+  });
+  return out;
+}
+
+Snapshot read_snapshot(const std::filesystem::path& path, bool run_in_progress) {
+  static constexpr std::array<std::string_view, 12> kHeader{
+      "id", "x", "y", "z", "radius", "vx", "vy", "vz", "submerged_fraction", "ca_x", "ca_y", "ca_z"};
+  const auto text = read_text_file(path);
+  Snapshot s;
+  std::array<std::vector<double>*, 11> cols{&s.x, &s.y, &s.z, &s.radius, &s.vx, &s.vy, &s.vz,
+                                            &s.submerged_fraction, &s.ca_x, &s.ca_y, &s.ca_z};
+  const auto scan = scan_csv(path, text, kHeader, run_in_progress, [&](std::size_t line, std::span<const std::string_view> f) {
+    const double id = parse_finite(f[0], path, line, kHeader[0]);
+    if (id != std::floor(id)) throw InputError(fmt::format("{}:{}: column 'id': '{}' is not an integer", path.string(), line, f[0]));
+    s.id.push_back(static_cast<std::int64_t>(id));
+    for (std::size_t c = 0; c < cols.size(); ++c) cols[c]->push_back(parse_finite(f[c + 1], path, line, kHeader[c + 1]));
+    if (s.radius.back() <= 0) throw InputError(fmt::format("{}:{}: column 'radius': must be > 0", path.string(), line));
+  });
+  s.tail_dropped = scan.tail_dropped;
+  return s;
+}
+
+std::vector<std::size_t> nearest_snapshots(const std::vector<SnapshotEntry>& entries, const std::vector<double>& times_s) {
+  std::vector<std::size_t> out;
+  if (entries.empty()) return out;
+  for (const double t : times_s) {
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < entries.size(); ++i)
+      if (std::abs(entries[i].t_s - t) < std::abs(entries[best].t_s - t)) best = i;
+    if (std::find(out.begin(), out.end(), best) == out.end()) out.push_back(best);
+  }
+  return out;
+}
+
+}  // namespace brash::post

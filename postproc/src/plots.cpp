@@ -1,0 +1,217 @@
+// gnuplot-driven PNG plots (Figs. 4, 5, 6 analogs) and the run comparison table/plot.
+#include <brash/post/plots.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <numeric>
+#include <stdexcept>
+#include <sys/wait.h>
+
+#include <fmt/format.h>
+
+#include <brash/post/atomic_write.hpp>
+#include <brash/post/csv.hpp>
+
+namespace brash::post {
+namespace fs = std::filesystem;
+namespace {
+
+// Single-quoted gnuplot string: a quote is doubled.
+std::string q(const fs::path& p) {
+  std::string s = p.string(), out = "'";
+  for (const char ch : s) out += ch == '\'' ? std::string("''") : std::string(1, ch);
+  return out + "'";
+}
+
+// Writes the script, renders into a temp PNG, renames it to `png` (readers never see half a PNG).
+fs::path render(const fs::path& png, const fs::path& work_dir, const std::string& name, const std::string& body,
+                int width_px, int height_px) {
+  fs::create_directories(work_dir);
+  const auto tmp = temp_path_for(png);
+  const auto script = work_dir / (name + ".gp");
+  write_file_atomic(script, fmt::format("set terminal pngcairo size {},{} font 'Sans,11' noenhanced\nset output {}\n{}\nunset output\n",
+                                        width_px, height_px, q(tmp), body));
+  run_gnuplot(script);
+  fs::rename(tmp, png);
+  return png;
+}
+
+}  // namespace
+
+void run_gnuplot(const fs::path& script) {
+  const auto log = script.parent_path() / (script.stem().string() + ".log");
+  const auto cmd = fmt::format("gnuplot '{}' > '{}' 2>&1", script.string(), log.string());
+  const int st = std::system(cmd.c_str());
+  if (st == -1 || !WIFEXITED(st) || WEXITSTATUS(st) != 0) {
+    std::string tail;
+    if (fs::exists(log)) {
+      tail = read_text_file(log);
+      if (tail.size() > 600) tail = "..." + tail.substr(tail.size() - 600);
+    }
+    throw std::runtime_error(fmt::format("gnuplot failed (status {}) on {}: {}", st, script.string(), tail));
+  }
+}
+
+fs::path plot_force_history(const RunAnalysis& a, const fs::path& out_dir, const fs::path& work_dir) {
+  fs::create_directories(work_dir);
+  const auto data = work_dir / "force_history.csv";
+  write_file_atomic(data, force_history_csv(a));
+  const auto& w = a.window.used_s;
+  const std::string body = fmt::format(R"(set datafile separator ','
+set title 'Force of the ice on the hull ({} / {}), model scale; shaded: averaging window [{:.2f}, {:.2f}] s'
+set xlabel 'time t [s]'
+set ylabel 'force [N]'
+set grid
+set key top left
+set object 1 rect from {}, graph 0 to {}, graph 1 behind fc rgb '#e8e8e8' fs solid 1.0 noborder
+set arrow 1 from {}, {} to {}, {} nohead lw 2 lc rgb 'black' front
+set label 1 sprintf('mean resistance -fx = %.4g +- %.2g N (95 %%)', {}, {}) at graph 0.35, graph 0.95 front
+plot {} using 1:2 with lines lw 1 lc rgb '#c0392b' title 'x (heading): fx', \
+     '' using 1:3 with lines lw 1 lc rgb '#2e86c1' title 'y: fy', \
+     '' using 1:4 with lines lw 1 lc rgb '#27ae60' title 'z: fz'
+)", a.meta.engine, a.meta.fluid_model, w[0], w[1], w[0], w[1], w[0], -a.resistance.mean, w[1], -a.resistance.mean,
+                                       a.resistance.mean, a.resistance.ci95, q(data));
+  return render(out_dir / "force_history.png", work_dir, "force_history", body, 1200, 600);
+}
+
+fs::path plot_resistance_bars(const RunAnalysis& a, const fs::path& out_dir, const fs::path& work_dir) {
+  fs::create_directories(work_dir);
+  const auto data = work_dir / "resistance_bars.dat";
+  const double paper_sim = a.meta.fluid_model == "drag" ? PaperValues::drag_full_kN : PaperValues::added_mass_full_kN;
+  const double rch = a.fsicr.result ? a.fsicr.result->R_CH_N / 1000 : NAN;
+  // columns: x label value err colour
+  std::string d;
+  d += fmt::format("0 \"simulation\\n({} {})\" {} {} 0\n", a.meta.engine, a.meta.fluid_model, a.resistance_full_kN, a.resistance_full_ci95_kN);
+  d += fmt::format("1 \"FSICR R_CH\\n(ours, {})\" {} 0 1\n", a.fsicr.ice_class, std::isnan(rch) ? 0.0 : rch);
+  d += fmt::format("2 \"paper simulation\\n({})\" {} 0 2\n", a.meta.fluid_model == "drag" ? "drag" : "added mass", paper_sim);
+  d += fmt::format("3 \"paper FSICR\" {} 0 2\n", PaperValues::fsicr_R_CH_kN);
+  write_file_atomic(data, d);
+  const std::string ratio = a.ratio_fsicr_to_sim ? fmt::format("FSICR / simulation = {:.2f} (paper 2.54)", *a.ratio_fsicr_to_sim) : "R_CH not available";
+  const std::string body = fmt::format(R"(set title 'Full-scale channel resistance (lambda = {}): {}'
+set ylabel 'resistance [kN]'
+set yrange [0:*]
+set xrange [-0.6:3.6]
+set style fill solid 0.8 border -1
+set boxwidth 0.6
+set grid ytics
+set palette defined (0 '#2e86c1', 1 '#c0392b', 2 '#bbbbbb')
+set cbrange [0:2]
+unset colorbox
+set key off
+plot {} using 1:3:5:xtic(2) with boxes lc palette, \
+     '' using 1:3:4 with yerrorbars lc rgb 'black' pt -1 lw 2, \
+     '' using 1:3:(sprintf('%.0f kN', $3)) with labels offset 0,1
+)", a.case_.scale_lambda, ratio, q(data));
+  return render(out_dir / "resistance_full_scale.png", work_dir, "resistance_bars", body, 900, 600);
+}
+
+fs::path plot_ice_views(const Snapshot& s, const SnapshotEntry& e, const PostCase& c, const fs::path& out_dir,
+                        const fs::path& work_dir) {
+  fs::create_directories(work_dir);
+  // Region: one hull length behind the stern to half a length ahead of the bow.
+  const double x0 = e.hull_x_m - 0.5 * c.lpp_m, x1 = e.hull_x_m + 1.5 * c.lpp_m;
+  std::vector<std::size_t> idx;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (s.x[i] >= x0 && s.x[i] <= x1) idx.push_back(i);
+  const auto write_sorted = [&](const fs::path& p, bool top) {
+    auto order = idx;
+    // Top view: the highest particle is what one sees, so it is drawn last; bottom view: the lowest.
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return top ? s.z[a] < s.z[b] : s.z[a] > s.z[b]; });
+    std::string d = "# x_m y_m radius_m value\n";
+    for (const auto i : order) {
+      const double v = top ? std::sqrt(s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]) : s.submerged_fraction[i];
+      d += fmt::format("{} {} {} {}\n", s.x[i], s.y[i], s.radius[i], v);
+    }
+    write_file_atomic(p, d);
+  };
+  const auto top = work_dir / fmt::format("ice_top_{}.dat", e.step);
+  const auto bottom = work_dir / fmt::format("ice_bottom_{}.dat", e.step);
+  write_sorted(top, true);
+  write_sorted(bottom, false);
+  const double hw = c.channel_width_m > 0 ? c.channel_width_m / 2 : 1.5 * c.beam_m;
+  const std::string hull = fmt::format(
+      "set object 1 rect from {},{} to {},{} front fs empty border lc rgb 'black' dt 2 lw 1.5\n"
+      "set label 1 'hull Lpp x B' at {},{} front\n",
+      e.hull_x_m, -c.beam_m / 2, e.hull_x_m + c.lpp_m, c.beam_m / 2, e.hull_x_m + 0.02 * c.lpp_m, c.beam_m / 2 + 0.05 * hw);
+  const std::string common = fmt::format("set xrange [{}:{}]\nset yrange [{}:{}]\nset size ratio -1\nset xlabel 'x [m] (heading)'\nset ylabel 'y [m]'\n{}",
+                                         x0, x1, -hw, hw, hull);
+  const std::string body = fmt::format(R"(set multiplot layout 2,1 title 't = {:.2f} s: ice around the hull ({} particles shown)'
+{}
+set title 'top view, coloured by speed |v| [m/s]'
+set palette rgbformulae 22,13,-31
+set cbrange [0:*]
+plot {} using 1:2:3:4 with circles lc palette fs solid 1.0 noborder notitle
+set title 'bottom view (from below, same axes), coloured by submerged fraction [-]'
+set palette defined (0 '#f7fbff', 0.5 '#6baed6', 1 '#08306b')
+set cbrange [0:1]
+plot {} using 1:2:3:4 with circles lc palette fs solid 1.0 noborder notitle
+unset multiplot
+)", e.t_s, idx.size(), common, q(top), q(bottom));
+  return render(out_dir / fmt::format("ice_views_{:06.2f}s.png", e.t_s), work_dir, fmt::format("ice_views_{}", e.step), body,
+                1400, 1000);
+}
+
+CompareRow compare_row(const RunAnalysis& a) {
+  CompareRow r;
+  r.run = a.run_dir.filename().string();
+  if (r.run.empty()) r.run = a.run_dir.parent_path().filename().string();
+  r.engine = a.meta.engine;
+  r.fluid_model = a.meta.fluid_model.empty() ? a.case_.fluid_model : a.meta.fluid_model;
+  r.speed_m_s = a.case_.speed_m_s;
+  r.mean_N = a.resistance.mean;
+  r.ci95_N = a.resistance.ci95;
+  r.full_kN = a.resistance_full_kN;
+  r.full_ci95_kN = a.resistance_full_ci95_kN;
+  if (a.fsicr.result) r.R_CH_kN = a.fsicr.result->R_CH_N / 1000;
+  if (a.ratio_fsicr_to_sim) r.ratio = *a.ratio_fsicr_to_sim;
+  r.complete = a.meta.status == "complete" && !a.force.tail_dropped && !a.window.truncated && !a.window.fallback;
+  return r;
+}
+
+std::string compare_markdown(const std::vector<CompareRow>& rows) {
+  std::string s = "| run | engine | fluid model | speed [m/s] | R model [N] | R full [kN] | FSICR R_CH [kN] | FSICR / sim | complete |\n"
+                  "|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& r : rows)
+    s += fmt::format("| {} | {} | {} | {:.3f} | {:.4f} ± {:.4f} | {:.1f} ± {:.1f} | {:.1f} | {:.2f} | {} |\n", r.run, r.engine,
+                     r.fluid_model, r.speed_m_s, r.mean_N, r.ci95_N, r.full_kN, r.full_ci95_kN, r.R_CH_kN, r.ratio,
+                     r.complete ? "yes" : "NO");
+  s += "\n± = 95 % confidence interval (block averaging). Paper: added mass 393 kN, drag 378 kN, FSICR 999 kN.\n";
+  return s;
+}
+
+std::string compare_csv(const std::vector<CompareRow>& rows) {
+  std::string s = "run,engine,fluid_model,speed_m_s,mean_N,ci95_N,full_kN,full_ci95_kN,R_CH_kN,ratio_fsicr_to_sim,complete\n";
+  for (const auto& r : rows)
+    s += fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", r.run, r.engine, r.fluid_model, r.speed_m_s, r.mean_N, r.ci95_N,
+                     r.full_kN, r.full_ci95_kN, r.R_CH_kN, r.ratio, r.complete ? 1 : 0);
+  return s;
+}
+
+fs::path plot_compare(const std::vector<CompareRow>& rows, const fs::path& out_dir, const fs::path& work_dir) {
+  fs::create_directories(work_dir);
+  const auto data = work_dir / "compare.dat";
+  std::string d;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const auto& r = rows[i];
+    d += fmt::format("{} \"{}\\n{} {:.3f} m/s{}\" {} {} {}\n", i, r.engine, r.fluid_model, r.speed_m_s, r.complete ? "" : "\\n(incomplete)",
+                     r.full_kN, r.full_ci95_kN, std::isnan(r.R_CH_kN) ? 0.0 : r.R_CH_kN);
+  }
+  write_file_atomic(data, d);
+  const std::string body = fmt::format(R"(set title 'Full-scale ice resistance per run (bars, 95 % CI) and FSICR R_CH (points)'
+set ylabel 'resistance [kN]'
+set yrange [0:*]
+set xrange [-0.6:{}]
+set style fill solid 0.7 border -1
+set boxwidth 0.6
+set grid ytics
+set key top right
+plot {} using 1:3:xtic(2) with boxes lc rgb '#2e86c1' title 'simulation', \
+     '' using 1:3:4 with yerrorbars lc rgb 'black' pt -1 lw 2 notitle, \
+     '' using 1:5 with points pt 7 ps 2 lc rgb '#c0392b' title 'FSICR R_CH', \
+     {} with lines dt 2 lc rgb '#888888' title 'paper added mass 393 kN'
+)", static_cast<double>(rows.size()) - 0.4, q(data), PaperValues::added_mass_full_kN);
+  return render(out_dir / "compare.png", work_dir, "compare", body, std::max<int>(800, 220 * static_cast<int>(rows.size())), 600);
+}
+
+}  // namespace brash::post

@@ -1,0 +1,148 @@
+// brash-post outputs on a synthetic run: PNG plots, ParaView files read back with VTK and meshio,
+// and the compare command.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+#include <vtkDataArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <brash/post/csv.hpp>
+
+#include "synthetic_run.hpp"
+
+namespace fs = std::filesystem;
+using brash::post::testing::SyntheticRun;
+
+namespace {
+
+fs::path scratch(const std::string& name) {
+  return fs::temp_directory_path() / fmt::format("brash_post_out_{}_{}", ::getpid(), name);
+}
+
+int sh(const std::string& cmd) {
+  const int st = std::system(cmd.c_str());
+  return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+bool is_png(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  char sig[8] = {};
+  in.read(sig, 8);
+  return in && std::string(sig + 1, 3) == "PNG" && fs::file_size(p) > 5000;
+}
+
+// Files of a .pvd collection, in order.
+std::vector<fs::path> pvd_files(const fs::path& pvd) {
+  const auto text = brash::post::read_text_file(pvd);
+  std::vector<fs::path> out;
+  for (std::size_t pos = 0; (pos = text.find("file=\"", pos)) != std::string::npos;) {
+    pos += 6;
+    out.push_back(pvd.parent_path() / text.substr(pos, text.find('"', pos) - pos));
+  }
+  return out;
+}
+
+class Outputs : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = scratch("run");
+    run_ = SyntheticRun{};
+    write_synthetic_run(dir_, run_);
+    status_ = sh(fmt::format("{} {} > {} 2>&1", BRASH_POST_EXE, dir_.string(), (dir_.parent_path() / (dir_.filename().string() + ".log")).string()));
+  }
+  static void TearDownTestSuite() { fs::remove_all(dir_); }
+  static inline fs::path dir_;
+  static inline SyntheticRun run_;
+  static inline int status_ = -1;
+};
+
+}  // namespace
+
+TEST_F(Outputs, CliSucceedsAndListsOutputs) {
+  ASSERT_EQ(status_, 0);
+  std::ifstream in(dir_ / "report.json");
+  const auto j = nlohmann::json::parse(in);
+  for (const auto* f : {"force_history.png", "resistance_full_scale.png", "particles.pvd"}) {
+    EXPECT_NE(std::find(j["outputs"].begin(), j["outputs"].end(), f), j["outputs"].end()) << f;
+  }
+  // No temp files left behind (atomic writes renamed every one).
+  for (const auto& e : fs::recursive_directory_iterator(dir_))
+    EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+}
+
+TEST_F(Outputs, PlotsArePngs) {
+  EXPECT_TRUE(is_png(dir_ / "force_history.png"));
+  EXPECT_TRUE(is_png(dir_ / "resistance_full_scale.png"));
+  // Default ice views: snapshots nearest to 15, 27.5, 40 s -> 20 s and 40 s.
+  EXPECT_TRUE(is_png(dir_ / "ice_views_020.00s.png"));
+  EXPECT_TRUE(is_png(dir_ / "ice_views_040.00s.png"));
+  EXPECT_FALSE(fs::exists(dir_ / "ice_views_000.00s.png"));
+  EXPECT_TRUE(fs::exists(dir_ / "post" / "force_history.gp"));
+}
+
+TEST_F(Outputs, ParticlesReadBackWithVtk) {
+  const auto files = pvd_files(dir_ / "particles.pvd");
+  ASSERT_EQ(files.size(), run_.snapshot_times_s.size());
+  vtkNew<vtkXMLUnstructuredGridReader> r;
+  r->SetFileName(files[1].string().c_str());
+  r->Update();
+  auto* g = r->GetOutput();
+  ASSERT_EQ(g->GetNumberOfPoints(), run_.particles);
+  auto* pd = g->GetPointData();
+  for (const auto* name : {"radius", "velocity", "submerged_fraction", "ca", "id"}) ASSERT_NE(pd->GetArray(name), nullptr) << name;
+  EXPECT_EQ(pd->GetArray("velocity")->GetNumberOfComponents(), 3);
+  EXPECT_EQ(pd->GetArray("ca")->GetNumberOfComponents(), 3);
+  // Particle 7 of the synthetic snapshot at t = 20 s.
+  double p[3];
+  g->GetPoint(7, p);
+  EXPECT_NEAR(p[0], 0.7 + 0.2, 1e-12);
+  EXPECT_NEAR(p[1], -1.0 + 0.21, 1e-12);
+  EXPECT_NEAR(p[2], -0.005, 1e-12);
+  EXPECT_NEAR(pd->GetArray("radius")->GetTuple1(7), 0.0088, 1e-15);
+  EXPECT_NEAR(pd->GetArray("velocity")->GetComponent(7, 0), 0.07, 1e-15);
+  EXPECT_NEAR(pd->GetArray("velocity")->GetComponent(7, 2), -0.007, 1e-15);
+  EXPECT_NEAR(pd->GetArray("submerged_fraction")->GetTuple1(7), 0.907, 1e-15);
+  EXPECT_NEAR(pd->GetArray("ca")->GetComponent(7, 2), 0.0, 1e-15);
+  EXPECT_NEAR(pd->GetArray("ca")->GetComponent(6, 2), 0.5, 1e-15);
+}
+
+TEST_F(Outputs, ParticlesReadBackWithMeshio) {
+  const auto files = pvd_files(dir_ / "particles.pvd");
+  ASSERT_FALSE(files.empty());
+  // /usr/bin/python3: Debian's python3-meshio (the python3 on PATH may be another build).
+  const auto py = fmt::format(
+      "import meshio, sys\n"
+      "m = meshio.read(sys.argv[1])\n"
+      "pd = m.point_data\n"
+      "assert m.points.shape == ({}, 3), m.points.shape\n"
+      "for k in ('radius', 'velocity', 'submerged_fraction', 'ca', 'id'): assert k in pd, (k, list(pd))\n"
+      "assert pd['velocity'].shape == ({}, 3) and pd['ca'].shape == ({}, 3)\n"
+      "assert abs(pd['velocity'][7][0] - 0.07) < 1e-15 and abs(pd['submerged_fraction'][7] - 0.907) < 1e-15\n"
+      "assert abs(m.points[7][0] - 0.9) < 1e-12\n",
+      run_.particles, run_.particles, run_.particles);
+  const auto script = dir_ / "check_meshio.py";
+  brash::post::testing::write_text(script, py);
+  EXPECT_EQ(sh(fmt::format("/usr/bin/python3 {} {}", script.string(), files[1].string())), 0);
+}
+
+TEST_F(Outputs, CompareMakesTableCsvAndPlot) {
+  const auto second = scratch("run2");
+  SyntheticRun r2;
+  r2.mean_resistance_N = 3.0;
+  write_synthetic_run(second, r2);
+  const auto out = scratch("compare");
+  ASSERT_EQ(sh(fmt::format("{} compare {} {} --out {} > /dev/null 2>&1", BRASH_POST_EXE, dir_.string(), second.string(), out.string())), 0);
+  const auto csv = brash::post::read_text_file(out / "compare.csv");
+  EXPECT_NE(csv.find("run,engine,fluid_model,speed_m_s,mean_N"), std::string::npos);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3);
+  EXPECT_NE(brash::post::read_text_file(out / "compare.md").find("| synthetic | added_mass | 0.482 |"), std::string::npos);
+  EXPECT_TRUE(is_png(out / "compare.png"));
+  fs::remove_all(second);
+  fs::remove_all(out);
+}
