@@ -133,6 +133,10 @@ void World::set_hull(std::vector<double> vertices, std::vector<dTriIndex> triang
   dGeomSetData(hull_geom_, nullptr);
 }
 
+void World::set_hull_velocity(const Vec3& v) {
+  if (hull_body_) dBodySetLinearVel(hull_body_, v.x(), v.y(), v.z());
+}
+
 Vec3 World::position(std::size_t i) const {
   const dReal* p = dBodyGetPosition(spheres_[i].body);
   return {p[0], p[1], p[2]};

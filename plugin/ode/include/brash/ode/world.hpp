@@ -109,6 +109,7 @@ class World {
   bool awake(std::size_t i) const;
   bool culled(std::size_t i) const { return spheres_[i].culled; }
 
+  void set_hull_velocity(const Vec3& v);
   bool has_hull() const { return hull_body_ != nullptr; }
   Vec3 hull_position() const;
   // Force of the ice on the hull during the last step (contacts only), and its number of contacts.

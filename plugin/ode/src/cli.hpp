@@ -1,0 +1,45 @@
+// Command-line options shared by brash-ode and bench-ode.
+#pragma once
+#include <CLI/CLI.hpp>
+
+#include "brash/ode/run_case.hpp"
+
+namespace brash::ode {
+
+inline void add_run_options(CLI::App& app, RunOptions& o, std::string& implicit_mode) {
+  app.add_option("--out", o.out_dir, "run directory (default: <runs-root>/<case>-ode-<model>-<stamp>)");
+  app.add_option("--runs-root", o.runs_root, "where run directories are created")->capture_default_str();
+  app.add_option("--duration", o.duration_s, "simulated time [s] (default: the case's run.duration_s)");
+  app.add_option("--model", o.model, "override fluid.model: drag | added_mass | both");
+  app.add_option("--treatment", o.treatment, "override fluid.treatment: implicit | explicit");
+  app.add_option("--dt", o.stepper.dt_s, "ODE time step [s] (the case's run.timestep_s is the DEM step)")->capture_default_str();
+  app.add_option("--iterations", o.stepper.iterations, "dWorldQuickStep iterations")->capture_default_str();
+  app.add_option("--erp", o.stepper.erp, "world ERP")->capture_default_str();
+  app.add_option("--cfm", o.stepper.cfm, "world CFM")->capture_default_str();
+  app.add_option("--surface-layer", o.stepper.contact_surface_layer, "contact surface layer [m]")->capture_default_str();
+  app.add_option("--angular-damping", o.stepper.angular_damping, "ODE angular damping per step (fluid torque is neglected)")
+      ->capture_default_str();
+  app.add_option("--implicit", implicit_mode, "implicit added mass in ODE: effective_mass | scale_forces")
+      ->check(CLI::IsMember({"effective_mass", "scale_forces"}))
+      ->capture_default_str();
+  app.add_flag("--auto-disable", o.skips.auto_disable, "skip: ODE auto-disable of resting spheres far from the hull");
+  app.add_option("--disable-linear", o.skips.disable_linear_m_s, "auto-disable linear speed threshold [m/s]")
+      ->capture_default_str();
+  app.add_option("--disable-angular", o.skips.disable_angular_rad_s, "auto-disable angular speed threshold [rad/s]")
+      ->capture_default_str();
+  app.add_flag("--cull", o.skips.cull, "skip: freeze spheres far from the hull (static obstacles)");
+  app.add_option("--cull-ahead", o.skips.cull_ahead_m, "cull/auto-disable: active distance ahead of the bow [m]")
+      ->capture_default_str();
+  app.add_option("--cull-behind", o.skips.cull_behind_m, "cull/auto-disable: active distance behind the stern [m]")
+      ->capture_default_str();
+  app.add_flag("--end-walls", o.end_walls, "walls at x = 0 and x = channel length (LIGGGHTS has side walls only)");
+  app.add_option("--settle", o.settle_s, "settle the bed this long [s] with the hull parked before t = 0")
+      ->capture_default_str();
+  app.add_flag("!--no-progress", o.progress, "no progress line on stderr");
+}
+
+inline ImplicitMode parse_implicit_mode(const std::string& s) {
+  return s == "scale_forces" ? ImplicitMode::ScaleForces : ImplicitMode::EffectiveMass;
+}
+
+}  // namespace brash::ode

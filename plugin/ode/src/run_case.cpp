@@ -1,0 +1,366 @@
+// brash-ode case runner (run_case.hpp).
+#include "brash/ode/run_case.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <unordered_map>
+
+#include "brash/case.hpp"
+#include "brash/error.hpp"
+#include "brash/hull/mesh.hpp"
+#include "brash/packing.hpp"
+#include "brash/run_layout.hpp"
+
+namespace brash::ode {
+namespace fs = std::filesystem;
+
+namespace {
+
+// Line number (1-based) of each data row of a packing CSV (rows after '#' lines and the header).
+std::vector<int> packing_lines(const fs::path& file) {
+  std::ifstream in(file);
+  std::vector<int> lines;
+  std::string s;
+  int ln = 0;
+  bool header = false;
+  while (std::getline(in, s)) {
+    ++ln;
+    if (s.empty() || s[0] == '#') continue;
+    if (!header) {
+      header = true;
+      continue;
+    }
+    lines.push_back(ln);
+  }
+  return lines;
+}
+
+// Overlaps beyond tol (m) between spheres and through the side walls; InputError naming file and lines.
+void check_packing(const std::vector<Sphere>& s, const fs::path& file, double tol, double half_width) {
+  const auto lines = packing_lines(file);
+  auto where = [&](std::size_t i) {
+    return fmt::format("{}:{}", file.string(), i < lines.size() ? lines[i] : static_cast<int>(i) + 1);
+  };
+  double dmax = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const auto& p = s[i];
+    if (!std::isfinite(p.x_m) || !std::isfinite(p.y_m) || !std::isfinite(p.z_m) || !std::isfinite(p.diameter_m) ||
+        !(p.diameter_m > 0))
+      throw InputError(fmt::format("{}: sphere {} has a non-finite position or a non-positive diameter", where(i), i + 1));
+    if (std::abs(p.y_m) + 0.5 * p.diameter_m > half_width + tol)
+      throw InputError(fmt::format("{}: sphere {} (y {:.6g} m, d {:.6g} m) pokes {:.3g} m through a side wall at |y| = {:.6g} m",
+                                   where(i), i + 1, p.y_m, p.diameter_m,
+                                   std::abs(p.y_m) + 0.5 * p.diameter_m - half_width, half_width));
+    dmax = std::max(dmax, p.diameter_m);
+  }
+  // Uniform grid with cell = d_max: neighbours are in the 27 surrounding cells.
+  auto key = [&](long a, long b, long c) { return (a * 73856093L) ^ (b * 19349663L) ^ (c * 83492791L); };
+  std::unordered_multimap<long, std::size_t> grid;
+  grid.reserve(s.size() * 2);
+  auto cell = [&](double v) { return static_cast<long>(std::floor(v / dmax)); };
+  for (std::size_t i = 0; i < s.size(); ++i) grid.emplace(key(cell(s[i].x_m), cell(s[i].y_m), cell(s[i].z_m)), i);
+  std::vector<std::string> bad;
+  std::size_t nbad = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const long cx = cell(s[i].x_m), cy = cell(s[i].y_m), cz = cell(s[i].z_m);
+    for (long a = -1; a <= 1; ++a)
+      for (long b = -1; b <= 1; ++b)
+        for (long c = -1; c <= 1; ++c) {
+          auto [lo, hi] = grid.equal_range(key(cx + a, cy + b, cz + c));
+          for (auto it = lo; it != hi; ++it) {
+            const std::size_t j = it->second;
+            if (j <= i) continue;
+            const double dx = s[i].x_m - s[j].x_m, dy = s[i].y_m - s[j].y_m, dz = s[i].z_m - s[j].z_m;
+            const double overlap = 0.5 * (s[i].diameter_m + s[j].diameter_m) - std::sqrt(dx * dx + dy * dy + dz * dz);
+            if (overlap > tol) {
+              ++nbad;
+              if (bad.size() < 5)
+                bad.push_back(fmt::format("{} and line {}: spheres {} and {} overlap by {:.3g} m", where(i),
+                                          j < lines.size() ? lines[j] : static_cast<int>(j) + 1, i + 1, j + 1, overlap));
+            }
+          }
+        }
+  }
+  if (nbad) {
+    std::string msg = fmt::format("{}: {} overlapping sphere pairs (tolerance {:.3g} m); an overlapping packing "
+                                  "explodes in ODE. First ones:",
+                                  file.string(), nbad, tol);
+    for (const auto& b : bad) msg += "\n  " + b;
+    throw InputError(msg);
+  }
+}
+
+// Overrides through the YAML text, so they are validated like any case key.
+void set_key(std::string& yaml, const std::string& section, const std::string& key, const std::string& value) {
+  const auto sec = yaml.find("\n" + section + ":");
+  const std::string pat = "\n  " + key + ":";
+  const auto pos = sec == std::string::npos ? sec : yaml.find(pat, sec);
+  if (pos == std::string::npos) throw InputError(fmt::format("cannot override {}.{}", section, key));
+  const auto eol = yaml.find('\n', pos + 1);
+  yaml.replace(pos, eol - pos, pat + " " + value);
+}
+
+core::FluidParams fluid_params(const Case& c) {
+  core::FluidParams p;
+  p.water_density_kg_m3 = c.water.density_kg_m3;
+  p.water_level_m = c.water.level_m;
+  p.gravity_m_s2 = c.water.gravity_m_s2;
+  p.kinematic_viscosity_m2_s = c.water.kinematic_viscosity_m2_s;
+  p.model = core::parse_fluid_model(to_string(c.fluid.model));
+  p.treatment = core::parse_treatment(to_string(c.fluid.treatment));
+  p.drag_law = core::parse_drag_law(to_string(c.fluid.drag_law));
+  p.drag_coefficient = c.fluid.drag_coefficient;
+  p.ca = core::parse_ca_table(to_string(c.fluid.ca_table));
+  return p;
+}
+
+std::string hms(double s) {
+  if (!std::isfinite(s) || s < 0) return "--:--";
+  const long t = std::lround(s);
+  return t >= 3600 ? fmt::format("{}:{:02}:{:02}", t / 3600, (t / 60) % 60, t % 60) : fmt::format("{}:{:02}", t / 60, t % 60);
+}
+
+}  // namespace
+
+RunResult run_case(const RunOptions& o) {
+  using clock = std::chrono::steady_clock;
+  const auto t_start = clock::now();
+  const fs::path case_file = fs::is_directory(o.case_dir) ? o.case_dir / "case.yaml" : o.case_dir;
+  const fs::path case_root = case_file.parent_path();
+  Case c = load_case(case_file);
+  {
+    std::string yaml = dump_case_yaml(c);
+    if (!o.model.empty()) set_key(yaml, "fluid", "model", o.model);
+    if (!o.treatment.empty()) set_key(yaml, "fluid", "treatment", o.treatment);
+    if (o.duration_s > 0) {
+      set_key(yaml, "run", "duration_s", fmt::format("{}", o.duration_s));
+      if (o.duration_s < c.run.window_s[1]) {
+        const double start = std::min(c.run.window_s[0], 0.5 * o.duration_s);
+        set_key(yaml, "run", "window_s", fmt::format("[{}, {}]", start, o.duration_s));
+      }
+    }
+    c = parse_case(yaml, case_root, case_file.string() + " (with command-line overrides)");
+  }
+  StepperSettings st = o.stepper;
+  if (!(st.dt_s > 0) || !std::isfinite(st.dt_s)) throw InputError(fmt::format("--dt {}: must be > 0", st.dt_s));
+
+  // Inputs.
+  if (!fs::exists(c.ice.packing_file))
+    throw InputError(fmt::format("{}: ice.packing_file {} not found; generate it with `brash-pack {}`", case_file.string(),
+                                 c.ice.packing_file.string(), case_root.string()));
+  if (!fs::exists(c.hull.file))
+    throw InputError(fmt::format("{}: hull.file {} not found (searched the case folder, $BRASH_HULL_DIR, "
+                                 "<build>/hull_meshes, <repo>/hull_meshes); build it with `make build`",
+                                 case_file.string(), c.hull.file.string()));
+  const auto spheres = read_packing_csv(c.ice.packing_file);
+  if (spheres.empty()) throw InputError(c.ice.packing_file.string() + ": no spheres");
+  check_packing(spheres, c.ice.packing_file, o.overlap_tolerance_over_d * c.ice.diameter_mean_m,
+                0.5 * c.channel.width_m);
+  auto mesh = hull::read_mesh(c.hull.file);
+  hull::require_plausible_units(mesh, c.hull.file, c.hull.draft_m, c.hull.lpp_m);
+  if (c.hull.band_m) mesh = hull::clip_band(mesh, c.hull.draft_m - (*c.hull.band_m)[0], c.hull.draft_m + (*c.hull.band_m)[1]);
+  std::vector<double> verts;
+  std::vector<dTriIndex> tris;
+  verts.reserve(mesh.vertices.size() * 3);
+  for (const auto& v : mesh.vertices) {
+    verts.push_back(v.x());
+    verts.push_back(v.y());
+    verts.push_back(v.z() - c.hull.draft_m);  // waterline at z = 0 in the body frame
+  }
+  for (const auto& f : mesh.faces)
+    for (int k : f) tris.push_back(static_cast<dTriIndex>(k));
+
+  // Run directory.
+  const fs::path run_dir =
+      o.out_dir.empty() ? run::make_run_dir(o.runs_root, c.name, "ode", std::string(to_string(c.fluid.model))) : o.out_dir;
+  fs::create_directories(run_dir / "particles");
+  fs::create_directories(run_dir / "restart");
+  run::write_atomic(run_dir / "case.yaml", dump_case_yaml(c));
+  std::string log;
+  auto logln = [&](const std::string& s) {
+    log += s + "\n";
+    if (!o.progress) return;
+    fmt::print(stderr, "[brash-ode] {}\n", s);
+  };
+
+  const auto fluid = fluid_params(c);
+  nlohmann::json meta = {
+      {"engine", "ode"},
+      {"engine_version", fmt::format("brash-ode 0.1 + ODE {} (Debian libode, double, dWorldQuickStep)", "0.16.2")},
+      {"fluid_model", to_string(c.fluid.model)},
+      {"treatment", to_string(c.fluid.treatment)},
+      {"implicit_realisation", o.implicit_mode == ImplicitMode::EffectiveMass ? "effective_mass" : "scale_forces"},
+      {"dt_s", st.dt_s},
+      {"ranks", 1},
+      {"threads", 1},
+      {"particles", spheres.size()},
+      {"wall_time_s", 0.0},
+      {"particle_steps", 0},
+      {"git_commit", run::git_commit()},
+      {"status", "running"},
+      {"reason", ""},
+      {"stepper", {{"quickstep_iterations", st.iterations}, {"erp", st.erp}, {"cfm", st.cfm},
+                   {"contact_surface_layer_m", st.contact_surface_layer}, {"max_contacts_per_pair", st.max_contacts_per_pair},
+                   {"angular_damping", st.angular_damping}, {"contact", "dContactApprox1"}, {"space", "SAP xyz"}}},
+      {"skips", {{"auto_disable", o.skips.auto_disable}, {"auto_disable_far_only", o.skips.auto_disable_far_only},
+                 {"disable_linear_m_s", o.skips.disable_linear_m_s}, {"disable_angular_rad_s", o.skips.disable_angular_rad_s},
+                 {"disable_steps", o.skips.disable_steps}, {"cull", o.skips.cull}, {"cull_ahead_m", o.skips.cull_ahead_m},
+                 {"cull_behind_m", o.skips.cull_behind_m}}},
+      {"end_walls", o.end_walls},
+      {"settle_s", o.settle_s}};
+  run::write_meta(run_dir, meta);
+
+  RunResult res;
+  res.run_dir = run_dir;
+  res.particles = spheres.size();
+  std::string csv = "t_s,fx_N,fy_N,fz_N\n";
+  std::string index = "step,t_s,file,hull_x_m\n";
+  try {
+    World w(fluid, st, Frictions{c.friction.ice_ice, c.friction.ice_hull, c.friction.ice_wall}, o.skips, o.implicit_mode);
+    for (const auto& s : spheres) w.add_sphere(Vec3(s.x_m, s.y_m, s.z_m), 0.5 * s.diameter_m, c.ice.density_kg_m3);
+    const double speed = c.ship.speed_m_s;
+    const double duration = c.run.duration_s;
+    double hx0 = 1e300, hx1 = -1e300, hz0 = 1e300;
+    for (std::size_t i = 0; i < verts.size(); i += 3) {
+      hx0 = std::min(hx0, verts[i]);
+      hx1 = std::max(hx1, verts[i]);
+      hz0 = std::min(hz0, verts[i + 2]);
+    }
+    const double x_lo = std::min(0.0, c.hull.start_x_m + hx0) - 0.5;
+    const double x_hi = std::max(c.channel.length_m, c.hull.start_x_m + hx1 + speed * duration) + 0.5;
+    add_channel_walls(w, x_lo, x_hi, 0.5 * c.channel.width_m, false, std::min(-1.0, hz0 - 0.1), 0.5);
+    if (o.end_walls) {
+      // End walls at the channel ends, spanning only the ice layer depth so the hull passes above/through freely
+      // (hull-wall pairs never collide anyway).
+      w.add_wall_box(Vec3(-0.025, 0, -0.25), Vec3(0.05, c.channel.width_m, 1.5));
+      w.add_wall_box(Vec3(c.channel.length_m + 0.025, 0, -0.25), Vec3(0.05, c.channel.width_m, 1.5));
+    }
+    w.set_hull(std::move(verts), std::move(tris), Vec3(c.hull.start_x_m, 0, 0), Vec3::Zero());
+    logln(fmt::format("{} spheres, {} hull triangles{}, channel {} x {} m, dt {} s, {} quickstep iterations, ERP {}, CFM {}",
+                      spheres.size(), mesh.faces.size(), c.hull.band_m ? " (waterline band)" : "", c.channel.length_m,
+                      c.channel.width_m, st.dt_s, st.iterations, st.erp, st.cfm));
+    logln(fmt::format("fluid model {} treatment {} (implicit realised as {}), ca_table {}, C_D {} ({})",
+                      to_string(c.fluid.model), to_string(c.fluid.treatment), meta["implicit_realisation"].get<std::string>(),
+                      to_string(c.fluid.ca_table), c.fluid.drag_coefficient, to_string(c.fluid.drag_law)));
+    logln(fmt::format("run dir {}", run_dir.string()));
+
+    // Optional settling with the hull parked.
+    const long settle_steps = std::lround(o.settle_s / st.dt_s);
+    for (long k = 0; k < settle_steps; ++k) w.step();
+    if (settle_steps) logln(fmt::format("settled {} s ({} steps)", o.settle_s, settle_steps));
+    w.set_hull_velocity(Vec3(speed, 0, 0));
+    const long ps_settle = w.stats().particle_steps;
+    const auto stats0 = w.stats();
+
+    const long steps = std::lround(duration / st.dt_s);
+    const long n_out = std::max(1L, std::lround(c.run.output_interval_s / st.dt_s));
+    const long n_dump = std::max(1L, std::lround(c.run.dump_interval_s / st.dt_s));
+    const bool tty = isatty(2);
+    auto dump = [&](long step) {
+      std::string s = "id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z\n";
+      for (std::size_t i = 0; i < w.size(); ++i) {
+        const Vec3 x = w.position(i), v = w.velocity(i);
+        if (!x.allFinite() || !v.allFinite())
+          throw std::runtime_error(fmt::format("sphere {} has a non-finite position/velocity at t = {} s (step {})", i + 1,
+                                               double(step) * st.dt_s, step));
+        const auto im = core::immersion(w.radius(i), x.z(), c.water.level_m);
+        const Vec3& ca = w.fluid_output(i).ca;
+        s += fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g},{:.6g},{:.6g},{:.6g},{:.6g},{:.4g},{:.4g},{:.4g}\n", i + 1, x.x(), x.y(),
+                         x.z(), w.radius(i), v.x(), v.y(), v.z(), im.fraction, ca.x(), ca.y(), ca.z());
+      }
+      const std::string name = fmt::format("particles_{}.csv", step);
+      run::write_atomic(run_dir / "particles" / name, s);
+      index += fmt::format("{},{:.9g},{},{:.9g}\n", step, double(step) * st.dt_s, name, w.hull_position().x());
+      run::write_atomic(run_dir / "particles" / "index.csv", index);
+    };
+    auto flush = [&](long step, double wall) {
+      run::write_atomic(run_dir / "hull_force.csv", csv);
+      run::write_atomic(run_dir / "log.txt", log);
+      meta["wall_time_s"] = wall;
+      meta["particle_steps"] = w.stats().particle_steps - ps_settle;
+      meta["steps_done"] = step;
+      run::write_meta(run_dir, meta);
+    };
+    dump(0);
+    Vec3 acc = Vec3::Zero();
+    double win_sum = 0;
+    long win_n = 0;
+    const auto loop0 = clock::now();
+    auto last_print = loop0;
+    for (long k = 1; k <= steps; ++k) {
+      w.step();
+      const Vec3& f = w.hull_force();
+      if (!f.allFinite())
+        throw std::runtime_error(fmt::format("non-finite hull force at t = {} s (step {})", double(k) * st.dt_s, k));
+      acc += f;
+      const double t = double(k) * st.dt_s;
+      if (t >= c.run.window_s[0] - 1e-12 && t <= c.run.window_s[1] + 1e-12) {
+        win_sum += f.x();
+        ++win_n;
+      }
+      if (k % n_out == 0) {
+        const Vec3 m = acc / double(n_out);
+        csv += fmt::format("{:.6f},{:.9g},{:.9g},{:.9g}\n", t, m.x(), m.y(), m.z());
+        acc.setZero();
+      }
+      const auto now = clock::now();
+      if (k % n_dump == 0 || k == steps) {
+        dump(k);
+        flush(k, std::chrono::duration<double>(now - t_start).count());
+      }
+      if (o.progress && (std::chrono::duration<double>(now - last_print).count() > 1.0 || k == steps)) {
+        last_print = now;
+        const double el = std::chrono::duration<double>(now - loop0).count();
+        const double eta = el / double(k) * double(steps - k);
+        const auto line = fmt::format("t = {:.3f} / {:.3f} s ({:3.0f}%)  elapsed {}  ETA {}  Fx {:+.3f} N  awake {}  contacts {}",
+                                      t, duration, 100.0 * double(k) / double(steps), hms(el), hms(eta), f.x(),
+                                      w.stats().awake_last, w.stats().contacts_last);
+        if (tty) fmt::print(stderr, "\r[brash-ode] {}   ", line);
+        else fmt::print(stderr, "[brash-ode] {}\n", line);
+        log += line + "\n";
+      }
+    }
+    if (o.progress && tty) fmt::print(stderr, "\n");
+    const auto now = clock::now();
+    res.loop_time_s = std::chrono::duration<double>(now - loop0).count();
+    res.wall_time_s = std::chrono::duration<double>(now - t_start).count();
+    res.steps = steps;
+    res.simulated_s = duration;
+    res.stats = w.stats();
+    res.particle_steps = w.stats().particle_steps - ps_settle;
+    res.mean_fx_window_N = win_n ? win_sum / double(win_n) : NAN;
+    meta["status"] = "complete";
+    meta["loop_time_s"] = res.loop_time_s;
+    meta["particle_steps_per_s"] = double(res.particle_steps) / res.loop_time_s;
+    meta["wall_s_per_simulated_s"] = res.loop_time_s / duration;
+    meta["phase_wall_s"] = {{"fluid", res.stats.wall_fluid_s - stats0.wall_fluid_s},
+                            {"collide", res.stats.wall_collide_s - stats0.wall_collide_s},
+                            {"quickstep", res.stats.wall_step_s - stats0.wall_step_s}};
+    meta["mean_fx_window_N"] = res.mean_fx_window_N;
+    logln(fmt::format("done: {} steps in {:.1f} s ({:.3g} particle-steps/s, {:.1f} s wall per simulated s); "
+                      "mean Fx over [{}, {}] s = {:.4f} N",
+                      steps, res.loop_time_s, double(res.particle_steps) / res.loop_time_s, res.loop_time_s / duration,
+                      c.run.window_s[0], c.run.window_s[1], res.mean_fx_window_N));
+    flush(steps, res.wall_time_s);
+  } catch (const std::exception& e) {
+    log += std::string("error: ") + e.what() + "\n";
+    meta["status"] = "failed";
+    meta["reason"] = e.what();
+    meta["wall_time_s"] = std::chrono::duration<double>(clock::now() - t_start).count();
+    run::write_atomic(run_dir / "hull_force.csv", csv);
+    run::write_atomic(run_dir / "log.txt", log);
+    run::write_meta(run_dir, meta);
+    throw;
+  }
+  return res;
+}
+
+}  // namespace brash::ode
