@@ -91,6 +91,8 @@ fs::path plot_resistance_bars(const RunAnalysis& a, const fs::path& out_dir, con
   const std::string body = fmt::format(R"(set title 'Full-scale channel resistance (lambda = {}): {}'
 set ylabel 'resistance [kN]'
 set yrange [0:*]
+set offsets 0, 0, graph 0.12, 0
+set bmargin 5
 set xrange [-0.6:3.6]
 set style fill solid 0.8 border -1
 set boxwidth 0.6
@@ -148,8 +150,10 @@ set cbrange [0:1]
 plot {} using 1:2:3:4 with circles lc palette fs solid 1.0 noborder notitle
 unset multiplot
 )", e.t_s, idx.size(), common, q(top), q(bottom));
+  // Height follows the channel's aspect ratio so the two panels are not mostly margin.
+  const int panel_px = std::clamp(static_cast<int>(1200.0 * 2 * hw / (x1 - x0)), 150, 700);
   return render(out_dir / fmt::format("ice_views_{:06.2f}s.png", e.t_s), work_dir, fmt::format("ice_views_{}", e.step), body,
-                1400, 1000);
+                1400, 2 * panel_px + 260);
 }
 
 CompareRow compare_row(const RunAnalysis& a) {
@@ -201,6 +205,8 @@ fs::path plot_compare(const std::vector<CompareRow>& rows, const fs::path& out_d
   const std::string body = fmt::format(R"(set title 'Full-scale ice resistance per run (bars, 95 % CI) and FSICR R_CH (points)'
 set ylabel 'resistance [kN]'
 set yrange [0:*]
+set offsets 0, 0, graph 0.12, 0
+set bmargin 6
 set xrange [-0.6:{}]
 set style fill solid 0.7 border -1
 set boxwidth 0.6
