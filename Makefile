@@ -9,7 +9,8 @@ DEB_PACKAGES := g++ make cmake ninja-build pkg-config \
   libeigen3-dev nlohmann-json3-dev libcli11-dev libyaml-cpp-dev libfmt-dev \
   libgtest-dev libgmock-dev libbenchmark-dev valgrind \
   liggghts libliggghts-dev openmpi-bin libopenmpi-dev \
-  libode-dev libvtk9-dev gnuplot-nox python3-meshio python3-numpy python3-vtk9
+  libode-dev libvtk9-dev gnuplot-nox python3-meshio python3-numpy python3-vtk9 \
+  yade pybind11-dev python3-dev
 
 .PHONY: deps build test run bench clean
 
