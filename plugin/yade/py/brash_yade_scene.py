@@ -1,0 +1,207 @@
+# brash YADE scene: a case run in YADE, launched by brash-yade-run as
+#   yade -n -j<N> -x brash_yade_scene.py <run_dir>/scene.json
+# in the run directory. scene.json is written by brash-yade-run from the case (every value resolved).
+# Writes hull_force.csv, particles/particles_<step>.csv + particles/index.csv, and yade_summary.json;
+# brash-yade-run writes case.yaml and meta.json around it.
+#
+# Scene (same as the LIGGGHTS path, plugin/liggghts/runner/liggghts_input.cpp):
+#   ice spheres from the packing CSV (FrictMat, Hertz-Mindlin with restitution via en/es),
+#   the hull STL (already clipped to the case's band, STL frame: keel z = 0, aft perpendicular x = 0) as
+#   facets shifted by (start_x, 0, -draft), moved at the case speed (Newton advances fixed bodies by vel),
+#   two side walls y = +-W/2, friction per material pair, fluid forces by the brash core (PyRunner).
+import json
+import math
+import os
+import sys
+import time
+
+import numpy as np
+
+import yade
+import yade.config
+
+from yade import O, _utils, ymport
+from yade.wrapper import (Bo1_Facet_Aabb, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, ForceResetter, FrictMat,
+                          Ig2_Facet_Sphere_ScGeom, Ig2_Sphere_Sphere_ScGeom, Ig2_Wall_Sphere_ScGeom,
+                          InsertionSortCollider, InteractionLoop, Ip2_FrictMat_FrictMat_MindlinPhys,
+                          Law2_ScGeom_MindlinPhys_Mindlin, MatchMaker, NewtonIntegrator, PyRunner)
+from yade.utils import sphere, wall
+Vector3 = yade.Vector3  # minieigen (HP) Vector3 of this YADE build
+
+from brash_yade_adapter import FluidAdapter, check_engine_order
+
+
+def log(msg):
+    print("[brash-yade] " + msg, flush=True)
+
+
+def write_atomic(path, text):
+    tmp = path + ".tmp"
+    with open(tmp, "w") as f:
+        f.write(text)
+    os.replace(tmp, path)
+
+
+def read_packing(path):
+    rows = []
+    with open(path) as f:
+        for line in f:
+            line = line.strip()
+            if not line or line.startswith("#") or line.startswith("id"):
+                continue
+            _, x, y, z, d = line.split(",")[:5]
+            rows.append((float(x), float(y), float(z), float(d)))
+    if not rows:
+        raise RuntimeError("packing %s holds no spheres" % path)
+    return np.array(rows)
+
+
+def main(scene_file):
+    s = json.load(open(scene_file))
+    run_dir = os.path.dirname(os.path.abspath(scene_file))
+    os.makedirs(os.path.join(run_dir, "particles"), exist_ok=True)
+    dt, duration = s["dt_s"], s["duration_s"]
+    steps = int(round(duration / dt))
+    out_every = max(1, int(round(s["output_interval_s"] / dt)))
+    dump_every = max(1, int(round(s["dump_interval_s"] / dt)))
+
+    # Materials: ice, hull, walls. Friction per pair set explicitly (MatchMaker on material ids), so a
+    # case with ice_wall > ice_ice gets its value (YADE's default would be the smaller angle).
+    E, nu, e = s["youngs_modulus_pa"], s["poisson_ratio"], s["restitution"]
+    f = s["friction"]
+    m_ice = O.materials.append(FrictMat(young=E, poisson=nu, frictionAngle=math.atan(f["ice_ice"]),
+                                        density=s["ice_density_kg_m3"], label="ice"))
+    m_hull = O.materials.append(FrictMat(young=E, poisson=nu, frictionAngle=math.atan(f["ice_hull"]),
+                                         density=1000.0, label="hull"))
+    m_wall = O.materials.append(FrictMat(young=E, poisson=nu, frictionAngle=math.atan(f["ice_wall"]),
+                                         density=1000.0, label="wall"))
+    friction = MatchMaker(matches=((m_ice, m_ice, math.atan(f["ice_ice"])), (m_ice, m_hull, math.atan(f["ice_hull"])),
+                                   (m_ice, m_wall, math.atan(f["ice_wall"]))), algo="min")
+
+    # Ice: group mask 1. Hull facets and walls: mask 3 with avoidSelfInteractionMask = 2, so the collider
+    # drops facet-facet, facet-wall and wall-wall pairs (yade.md: 325k -> 22k potential pairs).
+    pk = read_packing(s["packing_file"])
+    ice = [sphere((x, y, z), 0.5 * d, material=m_ice) for x, y, z, d in pk]
+    ice_ids = O.bodies.append(ice)
+    t0 = time.time()
+    hull = ymport.stl(s["hull_stl"], material=m_hull, shift=Vector3(s["hull_start_x_m"], 0, -s["draft_m"]),
+                      wire=True)
+    hull_ids = O.bodies.append(hull)
+    U = s["speed_m_s"]
+    for i in hull_ids:
+        b = O.bodies[i]
+        b.groupMask = 3
+        b.state.vel = Vector3(U, 0, 0)  # fixed (non-dynamic) bodies: Newton advances pos += vel dt
+    half_w = 0.5 * s["channel_width_m"]
+    wall_ids = [O.bodies.append(wall((0, -half_w, 0), axis=1, material=m_wall)),
+                O.bodies.append(wall((0, half_w, 0), axis=1, material=m_wall))]
+    for i in wall_ids:
+        O.bodies[i].groupMask = 3
+    log("%d spheres, %d hull facets (imported in %.1f s), 2 side walls at y = +-%.4g m"
+        % (len(ice_ids), len(hull_ids), time.time() - t0, half_w))
+
+    fl = s["fluid"]
+    fluid = FluidAdapter(ice_ids, model=fl["model"], treatment=fl["treatment"], cd=fl["drag_coefficient"],
+                         drag_law=fl["drag_law"], nu=s["water"]["kinematic_viscosity_m2_s"], ca_table=fl["ca_table"],
+                         water_level=s["water"]["level_m"], water_density=s["water"]["density_kg_m3"],
+                         g=s["water"]["gravity_m_s2"])
+
+    # Outputs. hull_force.csv: instantaneous force of the ice on the hull every out_every steps (like the
+    # LIGGGHTS path's fix ave/time N 1 N), read after InteractionLoop (contacts only: the fluid engine
+    # touches spheres only). Time = iteration * dt (positions x(n) of that step).
+    hf_path = os.path.join(run_dir, "hull_force.csv")
+    hf = open(hf_path + ".part", "w")
+    hf.write("t_s,fx_N,fy_N,fz_N\n")
+    index_rows = ["step,t_s,file,hull_x_m"]
+    hull_probe = hull_ids[0]
+
+    def hull_force():
+        O.forces.f(hull_probe, True)  # sync the force container
+        fx = _utils.sumForces(hull_ids, Vector3(1, 0, 0))
+        fy = _utils.sumForces(hull_ids, Vector3(0, 1, 0))
+        fz = _utils.sumForces(hull_ids, Vector3(0, 0, 1))
+        hf.write("%.9g,%.9g,%.9g,%.9g\n" % (O.iter * dt, fx, fy, fz))
+
+    states = fluid.states
+
+    def dump():
+        step = O.iter
+        name = "particles_%010d.csv" % step
+        frac, ca = fluid.fraction, fluid.ca
+        lines = ["id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z"]
+        for k, st in enumerate(states):
+            p, v = st.pos, st.vel
+            lines.append("%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.6g,%.6g,%.6g,%.6g"
+                         % (k + 1, p[0], p[1], p[2], fluid.radius[k], v[0], v[1], v[2], frac[k], ca[k][0], ca[k][1],
+                            ca[k][2]))
+        write_atomic(os.path.join(run_dir, "particles", name), "\n".join(lines) + "\n")
+        t = step * dt
+        index_rows.append("%d,%.9g,%s,%.9g" % (step, t, name, s["hull_start_x_m"] + U * t))
+        write_atomic(os.path.join(run_dir, "particles", "index.csv"), "\n".join(index_rows) + "\n")
+
+    import __main__
+    __main__._brash_hull_force, __main__._brash_dump = hull_force, dump
+
+    collider = InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Facet_Aabb(), Bo1_Wall_Aabb()],
+                                     avoidSelfInteractionMask=2, label="collider")
+    O.engines = [
+        ForceResetter(),
+        collider,
+        InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()],
+                        [Ip2_FrictMat_FrictMat_MindlinPhys(en=MatchMaker(algo="val", val=e),
+                                                           es=MatchMaker(algo="val", val=e), frictAngle=friction)],
+                        [Law2_ScGeom_MindlinPhys_Mindlin()], label="contacts"),
+        fluid.engine(),
+        PyRunner(command="_brash_hull_force()", iterPeriod=out_every, initRun=True, label="hullForce"),
+        PyRunner(command="_brash_dump()", iterPeriod=dump_every, initRun=True, label="dump"),
+        NewtonIntegrator(damping=0, gravity=(0, 0, 0), label="newton"),
+    ]
+    check_engine_order(O)
+    O.dt = dt
+    pwave = _utils.PWaveTimeStep()
+    log("dt = %.3g s (%.1f %% of the P-wave time step %.3g s), %d steps, output every %d, dump every %d"
+        % (dt, 100 * dt / pwave, pwave, steps, out_every, dump_every))
+    if dt > pwave:
+        raise RuntimeError("dt %.3g s exceeds YADE's P-wave time step %.3g s" % (dt, pwave))
+
+    O.timingEnabled = True
+    chunk = max(1, min(steps // 200, int(round(0.01 / dt))))
+    t_start = time.time()
+    last_print = -1e9
+    done = 0
+    total = steps + 1  # iterations 0..steps: outputs at t = 0 .. duration, like LIGGGHTS' `run steps`
+    while done < total:
+        k = min(chunk, total - done)
+        O.run(k, True)
+        done += k
+        hf.flush()
+        el = time.time() - t_start
+        if el - last_print >= 5.0 or done == total:
+            last_print = el
+            log("t = %.3f / %.3f s  step %d  elapsed %.0f s  ETA %.0f s  interactions %d"
+                % (done * dt, duration, done, el, el * (total - done) / done, len(O.interactions)))
+    wall_s = time.time() - t_start
+    hf.close()
+    os.replace(hf_path + ".part", hf_path)
+
+    timing = {}
+    for eng in O.engines:
+        name = eng.label or type(eng).__name__
+        timing[name] = {"exec_time_s": eng.execTime * 1e-9, "exec_count": eng.execCount}
+    summary = {"steps": total, "particles": len(ice_ids), "hull_facets": len(hull_ids), "loop_time_s": wall_s,
+               "particle_steps": float(len(ice_ids)) * total, "engines": timing,
+               "fluid_us_per_particle_step": 1e6 * timing["brashFluid"]["exec_time_s"] / max(1.0, len(ice_ids) * total),
+               "yade_version": getattr(yade.config, "version", "")}
+    write_atomic(os.path.join(run_dir, "yade_summary.json"), json.dumps(summary, indent=1))
+    log("done: %d steps in %.1f s, %.3g particle-steps/s; fluid adapter %.3g us per particle-step"
+        % (total, wall_s, len(ice_ids) * total / wall_s, summary["fluid_us_per_particle_step"]))
+
+
+try:
+    main(sys.argv[1])
+except Exception as exc:  # an exit code for brash-yade-run (yade -x would otherwise exit 0 on some errors)
+    import traceback
+    traceback.print_exc()
+    print("[brash-yade] ERROR: %s" % exc, flush=True)
+    sys.exit(1)
+sys.exit(0)

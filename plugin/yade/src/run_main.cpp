@@ -1,0 +1,241 @@
+// brash-yade-run CASE_DIR: runs a case with YADE and writes the run layout of docs/case_format.md
+// (case.yaml, meta.json, hull_force.csv, particles/, log.txt; restart/ stays empty: no YADE restarts yet).
+// It prepares the inputs (packing via brash-pack if missing, the hull clipped to the case's band as
+// hull.stl, scene.json), launches `yade -n -j<N> -x brash_yade_scene.py scene.json` in the run directory
+// with brash_yade on PYTHONPATH, mirrors its output to log.txt with progress on the terminal, fills in
+// meta.json and calls brash-post when it was built.
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fmt/format.h>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "brash/case.hpp"
+#include "brash/error.hpp"
+#include "brash/hull/mesh.hpp"
+#include "brash/packing.hpp"
+#include "brash/run_layout.hpp"
+
+namespace fs = std::filesystem;
+using brash::InputError;
+
+namespace {
+
+fs::path bin_dir() { return fs::read_symlink("/proc/self/exe").parent_path(); }
+
+std::string quote(const fs::path& p) { return "'" + p.string() + "'"; }
+
+int run_command(const std::string& cmd) {
+  const int rc = std::system(cmd.c_str());
+  return WIFEXITED(rc) ? WEXITSTATUS(rc) : 128;
+}
+
+// Where the scene script and the module are: next to the build by default, overridable.
+fs::path env_or(const char* var, const char* fallback) {
+  const char* v = std::getenv(var);
+  return v && *v ? fs::path(v) : fs::path(fallback);
+}
+
+struct EngineResult {
+  int exit_code = 0;
+  std::string error;
+};
+
+EngineResult run_yade(const fs::path& run_dir, int threads) {
+  const fs::path home = std::getenv("HOME") && *std::getenv("HOME") ? fs::path(std::getenv("HOME")) : run_dir / "home";
+  fs::create_directories(home);
+  const std::string cmd = fmt::format(
+      "cd {} && HOME={} PYTHONPATH={}${{PYTHONPATH:+:$PYTHONPATH}} OMP_NUM_THREADS={} {} -n -j{} -x {} scene.json 2>&1",
+      quote(run_dir), quote(home), quote(env_or("BRASH_YADE_PYDIR", BRASH_YADE_PYDIR)), threads,
+      quote(env_or("BRASH_YADE_EXE", BRASH_YADE_EXE)), threads, quote(env_or("BRASH_YADE_SCRIPT", BRASH_YADE_SCRIPT)));
+  EngineResult res;
+  std::ofstream log(run_dir / "log.txt");
+  FILE* pipe = ::popen(cmd.c_str(), "r");
+  if (!pipe) throw std::runtime_error("cannot start " + cmd);
+  char buf[8192];
+  while (std::fgets(buf, sizeof buf, pipe)) {
+    std::string line = buf;
+    log << line << std::flush;
+    if (line.rfind("[brash-yade] t = ", 0) == 0) {
+      line.erase(line.find_last_not_of("\r\n") + 1);
+      std::fprintf(stderr, "\r%s   ", line.c_str());
+    } else if (line.rfind("[brash-yade] ERROR", 0) == 0 && res.error.empty()) {
+      res.error = line.substr(19, line.find('\n') - 19);
+    } else if (line.rfind("[brash-yade]", 0) == 0) {
+      std::fprintf(stderr, "\n%s", line.c_str());
+    }
+  }
+  std::fprintf(stderr, "\n");
+  const int rc = ::pclose(pipe);
+  res.exit_code = WIFEXITED(rc) ? WEXITSTATUS(rc) : 128;
+  return res;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"brash-yade-run: run a case directory with YADE and write the brash run layout"};
+  fs::path case_dir, out_dir, runs_root = "runs";
+  int threads = 1;
+  double duration = -1;
+  std::string model, treatment;
+  bool no_post = false, prepare_only = false;
+  app.add_option("case_dir", case_dir, "case folder holding case.yaml")->required();
+  app.add_option("--out", out_dir, "run directory (default: runs/<case>-yade-<model>-<stamp>)");
+  app.add_option("--runs-root", runs_root, "where run directories are created");
+  app.add_option("--duration", duration, "simulated time [s] (default: the case's run.duration_s)");
+  app.add_option("--model", model, "override fluid.model: drag | added_mass | both");
+  app.add_option("--treatment", treatment, "override fluid.treatment: implicit | explicit");
+  app.add_option("-j,--threads", threads, "YADE OpenMP threads")->check(CLI::Range(1, 256));
+  app.add_flag("--no-post", no_post, "do not run brash-post afterwards");
+  app.add_flag("--prepare-only", prepare_only, "write the run directory's inputs (scene.json, hull.stl) and stop");
+  CLI11_PARSE(app, argc, argv);
+
+  fs::path run_dir;
+  nlohmann::json meta;
+  try {
+    const fs::path case_file = fs::is_directory(case_dir) ? case_dir / "case.yaml" : case_dir;
+    const fs::path case_root = case_file.parent_path();
+    brash::Case c = brash::load_case(case_file);
+    // Overrides go through the YAML text so they are validated like any case key.
+    std::string yaml = brash::dump_case_yaml(c);
+    auto set_key = [&](const std::string& section, const std::string& key, const std::string& value) {
+      const std::string pat = "\n  " + key + ":";
+      const auto sec = yaml.find("\n" + section + ":");
+      const auto pos = yaml.find(pat, sec);
+      if (sec == std::string::npos || pos == std::string::npos) throw InputError("cannot override " + key);
+      const auto eol = yaml.find('\n', pos + 1);
+      yaml.replace(pos, eol - pos, pat + " " + value);
+    };
+    if (!model.empty()) set_key("fluid", "model", model);
+    if (!treatment.empty()) set_key("fluid", "treatment", treatment);
+    if (duration > 0) {
+      set_key("run", "duration_s", fmt::format("{}", duration));
+      if (duration < c.run.window_s[1]) {
+        const double start = std::min(c.run.window_s[0], 0.5 * duration);
+        set_key("run", "window_s", fmt::format("[{}, {}]", start, duration));
+        std::cerr << fmt::format("[brash-yade] --duration {} s is shorter than the window: window set to [{}, {}] s\n",
+                                 duration, start, duration);
+      }
+    }
+    c = brash::parse_case(yaml, case_root, case_file.string() + " (with command-line overrides)");
+
+    if (!fs::exists(c.ice.packing_file)) {
+      std::cerr << "[brash-yade] generating the packing " << c.ice.packing_file << "\n";
+      if (run_command(quote(bin_dir() / "brash-pack") + " " + quote(case_root)) != 0)
+        throw InputError(case_file.string() + ": brash-pack failed to generate " + c.ice.packing_file.string());
+    }
+    if (!fs::exists(c.hull.file))
+      throw InputError(fmt::format("{}: hull.file {} not found (searched the case folder, $BRASH_HULL_DIR, "
+                                   "<build>/hull_meshes, <repo>/hull_meshes); build it with `make build`",
+                                   case_file.string(), c.hull.file.string()));
+    const auto spheres = brash::read_packing_csv(c.ice.packing_file);
+    auto mesh = brash::hull::read_mesh(c.hull.file);
+    brash::hull::require_plausible_units(mesh, c.hull.file, c.hull.draft_m, c.hull.lpp_m);
+    if (c.hull.band_m)
+      mesh = brash::hull::clip_band(mesh, c.hull.draft_m - (*c.hull.band_m)[0], c.hull.draft_m + (*c.hull.band_m)[1]);
+
+    run_dir = out_dir.empty() ? brash::run::make_run_dir(runs_root, c.name, "yade", std::string(to_string(c.fluid.model)))
+                              : out_dir;
+    fs::create_directories(run_dir / "particles");
+    fs::create_directories(run_dir / "restart");
+    brash::run::write_atomic(run_dir / "case.yaml", brash::dump_case_yaml(c));
+    brash::hull::write_stl(run_dir / "hull.stl", mesh);
+    const nlohmann::json scene = {
+        {"case", c.name},
+        {"packing_file", c.ice.packing_file.string()},
+        {"ice_density_kg_m3", c.ice.density_kg_m3},
+        {"hull_stl", fs::absolute(run_dir / "hull.stl").string()},
+        {"draft_m", c.hull.draft_m},
+        {"hull_start_x_m", c.hull.start_x_m},
+        {"speed_m_s", c.ship.speed_m_s},
+        {"channel_width_m", c.channel.width_m},
+        {"channel_length_m", c.channel.length_m},
+        {"friction", {{"ice_ice", c.friction.ice_ice}, {"ice_hull", c.friction.ice_hull}, {"ice_wall", c.friction.ice_wall}}},
+        {"youngs_modulus_pa", c.contact.youngs_modulus_pa},
+        {"poisson_ratio", c.contact.poisson_ratio},
+        {"restitution", c.contact.restitution},
+        {"water",
+         {{"density_kg_m3", c.water.density_kg_m3},
+          {"level_m", c.water.level_m},
+          {"gravity_m_s2", c.water.gravity_m_s2},
+          {"kinematic_viscosity_m2_s", c.water.kinematic_viscosity_m2_s}}},
+        {"fluid",
+         {{"model", std::string(to_string(c.fluid.model))},
+          {"treatment", std::string(to_string(c.fluid.treatment))},
+          {"drag_coefficient", c.fluid.drag_coefficient},
+          {"drag_law", std::string(to_string(c.fluid.drag_law))},
+          {"ca_table", std::string(to_string(c.fluid.ca_table))}}},
+        {"dt_s", c.run.timestep_s},
+        {"duration_s", c.run.duration_s},
+        {"output_interval_s", c.run.output_interval_s},
+        {"dump_interval_s", c.run.dump_interval_s}};
+    brash::run::write_atomic(run_dir / "scene.json", scene.dump(1) + "\n");
+    if (prepare_only) {
+      std::cout << run_dir.string() << "\n";
+      return 0;
+    }
+
+    meta = {{"engine", "yade"},
+            {"engine_version", "YADE 2023.02a (Debian yade) + brash_yade PyRunner adapter"},
+            {"fluid_model", to_string(c.fluid.model)},
+            {"treatment", to_string(c.fluid.treatment)},
+            {"dt_s", c.run.timestep_s},
+            {"ranks", 1},
+            {"threads", threads},
+            {"particles", spheres.size()},
+            {"wall_time_s", 0.0},
+            {"particle_steps", 0},
+            {"git_commit", brash::run::git_commit()},
+            {"status", "running"},
+            {"reason", ""}};
+    brash::run::write_meta(run_dir, meta);
+    std::cerr << "[brash-yade] " << spheres.size() << " spheres, " << mesh.faces.size() << " hull triangles -> "
+              << run_dir.string() << "\n";
+
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto res = run_yade(run_dir, threads);
+    meta["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const fs::path summary_file = run_dir / "yade_summary.json";
+    if (fs::exists(summary_file)) {
+      std::ifstream in(summary_file);
+      const auto summary = nlohmann::json::parse(in);
+      meta["particle_steps"] = summary.at("particle_steps");
+      meta["loop_time_s"] = summary.at("loop_time_s");
+      meta["fluid_us_per_particle_step"] = summary.at("fluid_us_per_particle_step");
+      meta["hull_facets"] = summary.at("hull_facets");
+    }
+    if (res.exit_code != 0 || !res.error.empty() || !fs::exists(summary_file)) {
+      meta["status"] = "failed";
+      meta["reason"] = res.error.empty() ? fmt::format("yade exited with code {}", res.exit_code) : res.error;
+      brash::run::write_meta(run_dir, meta);
+      std::cerr << "[brash-yade] run failed: " << meta["reason"].get<std::string>() << " (see "
+                << (run_dir / "log.txt").string() << ")\n";
+      return 1;
+    }
+    meta["status"] = "complete";
+    brash::run::write_meta(run_dir, meta);
+  } catch (const std::exception& e) {
+    std::cerr << "brash-yade-run: error: " << e.what() << "\n";
+    if (!run_dir.empty() && !meta.empty()) {
+      meta["status"] = "failed";
+      meta["reason"] = e.what();
+      brash::run::write_meta(run_dir, meta);
+    }
+    return 1;
+  }
+  std::cout << run_dir.string() << "\n";
+  if (!no_post) {
+    const auto post = bin_dir() / "brash-post";
+    if (!fs::exists(post)) {
+      std::cerr << "[brash-yade] brash-post not built; skipping the report\n";
+      return 0;
+    }
+    return run_command(quote(post) + " " + quote(run_dir));
+  }
+  return 0;
+}
