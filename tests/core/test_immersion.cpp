@@ -23,7 +23,7 @@ TEST(Immersion, HalfSubmerged) {
   EXPECT_DOUBLE_EQ(im.height_m, r);
   EXPECT_NEAR(im.volume_m3, 2.0 / 3.0 * kPi * r * r * r, 1e-18);
   EXPECT_NEAR(im.fraction, 0.5, 1e-15);
-  EXPECT_NEAR(im.waterline_radius_m, r, 1e-15);
+  EXPECT_NEAR(im.waterline_radius_sq_m2, r * r, 1e-18);
   EXPECT_NEAR(projected_area_vertical(r, im), kPi * r * r, 1e-15);
   EXPECT_NEAR(projected_area_horizontal(r, im), 0.5 * kPi * r * r, 1e-15);
 }

@@ -11,7 +11,8 @@ struct Immersion {
   double height_m = 0;     // submerged height h in [0, 2r]
   double volume_m3 = 0;    // V_s = pi h^2 (3r - h) / 3
   double fraction = 0;     // s = V_s / V
-  double waterline_radius_m = 0;  // radius of the circle cut by the water plane (0 if not cut)
+  double waterline_radius_sq_m2 = 0;  // squared radius of the circle cut by the water plane (0 if not cut);
+                                      // kept squared so the hot path needs no sqrt
 };
 
 // Sphere of radius r with centre height z_c, water surface at z_w.
@@ -22,7 +23,7 @@ inline Immersion immersion(double radius_m, double centre_z_m, double water_leve
   im.height_m = h;
   im.volume_m3 = std::numbers::pi * h * h * (3.0 * r - h) / 3.0;
   im.fraction = h * h * (3.0 * r - h) / (4.0 * r * r * r);
-  im.waterline_radius_m = std::sqrt(std::max(0.0, h * (2.0 * r - h)));
+  im.waterline_radius_sq_m2 = h * (2.0 * r - h);
   return im;
 }
 
@@ -30,7 +31,7 @@ inline Immersion immersion(double radius_m, double centre_z_m, double water_leve
 // the waterline disc while the centre is above water, the full disc once it is below.
 inline double projected_area_vertical(double radius_m, const Immersion& im) {
   const double r = radius_m;
-  if (im.height_m <= r) return std::numbers::pi * im.waterline_radius_m * im.waterline_radius_m;
+  if (im.height_m <= r) return std::numbers::pi * im.waterline_radius_sq_m2;
   return std::numbers::pi * r * r;
 }
 
@@ -42,7 +43,7 @@ inline double projected_area_horizontal(double radius_m, const Immersion& im) {
   if (h <= 0) return 0;
   if (h >= 2 * r) return std::numbers::pi * r * r;
   const double c = std::clamp((r - h) / r, -1.0, 1.0);
-  return r * r * std::acos(c) - (r - h) * im.waterline_radius_m;
+  return r * r * std::acos(c) - (r - h) * std::sqrt(im.waterline_radius_sq_m2);
 }
 
 // Projected submerged area normal to a direction with vertical direction cosine cos_z:

@@ -1,0 +1,49 @@
+// End to end: the quick case through brash-liggghts-run (2 MPI ranks, shortened to 1.2 s so the bow
+// is in the ice) and brash-post; the run layout and report.json carry everything a user reads.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+
+namespace {
+nlohmann::json read_json(const fs::path& p) {
+  std::ifstream in(p);
+  return nlohmann::json::parse(in);
+}
+}  // namespace
+
+TEST(Pipeline, QuickCaseLiggghtsToReport) {
+  const fs::path out = fs::temp_directory_path() / ("brash_pipeline_" + std::to_string(::getpid()));
+  fs::remove_all(out);
+  const std::string cmd = std::string("'") + BRASH_BIN_DIR + "/brash-liggghts-run' '" + BRASH_SOURCE_DIR +
+                          "/cases/jbc_quick' --np 2 --duration 1.2 --out '" + out.string() + "' > '" +
+                          out.string() + ".log' 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << "see " << out << ".log";
+
+  for (const char* f : {"case.yaml", "meta.json", "hull_force.csv", "log.txt", "particles/index.csv", "report.json",
+                        "report.md"})
+    EXPECT_TRUE(fs::exists(out / f)) << f;
+  const auto meta = read_json(out / "meta.json");
+  EXPECT_EQ(meta["status"], "complete");
+  EXPECT_EQ(meta["engine"], "liggghts");
+  EXPECT_EQ(meta["ranks"], 2);
+  EXPECT_GT(meta["particle_steps"].get<double>(), 8000.0 * 12000);
+
+  const auto r = read_json(out / "report.json");
+  for (const char* k : {"engine", "fluid_model", "window_s", "resistance_model_N", "lambda", "resistance_full_kN",
+                        "fsicr", "ratio_fsicr_to_sim", "wall_time_s", "particle_steps"})
+    EXPECT_TRUE(r.contains(k)) << k;
+  for (const char* k : {"mean", "ci95", "x", "y", "z"}) EXPECT_TRUE(r["resistance_model_N"].contains(k)) << k;
+  // The bow (stem at x = -0.2 m at t = 0, 0.482 m/s) is in the ice from 0.41 s: by the window [0.6, 1.2] s
+  // the ice resists the ship (positive resistance) and FSICR gives a finite channel resistance.
+  EXPECT_GT(r["resistance_model_N"]["mean"].get<double>(), 0.5);
+  EXPECT_DOUBLE_EQ(r["lambda"].get<double>(), 28.5);
+  EXPECT_NEAR(r["resistance_full_kN"].get<double>(),
+              r["resistance_model_N"]["mean"].get<double>() * 28.5 * 28.5 * 28.5 / 1000, 1e-6);
+  EXPECT_GT(r["fsicr"]["R_CH_kN"].get<double>(), 100.0);
+  fs::remove_all(out);
+}
