@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <functional>
+#include <numbers>
 #include <sstream>
 
 #include "brash/error.hpp"
@@ -334,6 +335,16 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
       r.fail(s["timestep_s"], "run.timestep_s",
              fmt::format("timestep {} s is longer than run.output_interval_s {} s", c.run.timestep_s,
                          c.run.output_interval_s));
+    // Contact stability: the time step must resolve the Rayleigh time of the smallest sphere,
+    // T_R = pi r sqrt(rho / G) / (0.1631 nu + 0.8766), G = E / (2 (1 + nu)) (docs/stability.md).
+    if (const double tr = rayleigh_time_s(c); c.run.timestep_s > kMaxTimestepOverRayleigh * tr)
+      r.fail(s["timestep_s"], "run.timestep_s",
+             fmt::format("timestep {} s is {:.0f} % of the Rayleigh time {:.3g} s of the smallest sphere (d = {:.4g} m, "
+                         "contact.youngs_modulus_pa = {}, ice.density_kg_m3 = {}); contacts are unstable above {:.0f} %: "
+                         "use <= {:.3g} s",
+                         c.run.timestep_s, 100 * c.run.timestep_s / tr, tr, 2 * min_radius_m(c),
+                         c.contact.youngs_modulus_pa, c.ice.density_kg_m3, 100 * kMaxTimestepOverRayleigh,
+                         kMaxTimestepOverRayleigh * tr));
     if (c.run.output_interval_s > c.run.duration_s)
       r.fail(s["output_interval_s"], "run.output_interval_s",
              fmt::format("{} s is longer than run.duration_s {} s", c.run.output_interval_s,
@@ -351,6 +362,16 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
     r.opt_num(s, "fsicr", "A_wf_m2", c.fsicr.A_wf_m2);
   }
   return c;
+}
+
+double min_radius_m(const Case& c) {
+  return 0.5 * (c.ice.diameter_mean_m - c.ice.diameter_truncation_sd * c.ice.diameter_sd_m);
+}
+
+double rayleigh_time_s(const Case& c) {
+  const double nu = c.contact.poisson_ratio;
+  const double g = c.contact.youngs_modulus_pa / (2 * (1 + nu));
+  return std::numbers::pi * min_radius_m(c) * std::sqrt(c.ice.density_kg_m3 / g) / (0.1631 * nu + 0.8766);
 }
 
 Case load_case(const fs::path& case_yaml) {

@@ -13,6 +13,7 @@
 #include <numbers>
 #include <random>
 #include <sstream>
+#include <unordered_map>
 
 #include "brash/error.hpp"
 
@@ -483,13 +484,62 @@ std::string packing_json(const PackingStats& s) {
 
 void write_packing_json(const fs::path& file, const PackingStats& s) { write_atomically(file, packing_json(s)); }
 
+namespace {
+
+// Overlapping spheres in a packing read from a file: the first pair (in file order) whose overlap
+// exceeds kReadOverlapTolerance of the smaller diameter is an error. A DEM engine would start with a
+// huge contact force there (the generator's beds overlap by < 1e-6 d). Hash grid, cell = largest d.
+constexpr double kReadOverlapTolerance = 1e-4;
+
+void check_no_overlap(const fs::path& file, const std::vector<Sphere>& s, const std::vector<std::size_t>& lines,
+                      const std::vector<double>& ids) {
+  if (s.size() < 2) return;
+  double dmax = 0;
+  for (const auto& b : s) dmax = std::max(dmax, b.diameter_m);
+  auto cell_of = [dmax](double v) { return static_cast<std::int64_t>(std::floor(v / dmax)); };
+  auto key = [](std::int64_t i, std::int64_t j, std::int64_t k) {
+    return (static_cast<std::uint64_t>(i) * 73856093u) ^ (static_cast<std::uint64_t>(j) * 19349663u) ^
+           (static_cast<std::uint64_t>(k) * 83492791u);
+  };
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> grid;
+  grid.reserve(s.size());
+  for (std::size_t n = 0; n < s.size(); ++n) {
+    const auto& a = s[n];
+    const auto ci = cell_of(a.x_m), cj = cell_of(a.y_m), ck = cell_of(a.z_m);
+    for (std::int64_t di = -1; di <= 1; ++di)
+      for (std::int64_t dj = -1; dj <= 1; ++dj)
+        for (std::int64_t dk = -1; dk <= 1; ++dk) {
+          const auto it = grid.find(key(ci + di, cj + dj, ck + dk));
+          if (it == grid.end()) continue;
+          for (const std::size_t m : it->second) {
+            const auto& b = s[m];
+            const double dx = a.x_m - b.x_m, dy = a.y_m - b.y_m, dz = a.z_m - b.z_m;
+            const double ov = 0.5 * (a.diameter_m + b.diameter_m) - std::sqrt(dx * dx + dy * dy + dz * dz);
+            if (ov > kReadOverlapTolerance * std::min(a.diameter_m, b.diameter_m))
+              throw InputError(fmt::format(
+                  "{}:{}: sphere id {:g} overlaps sphere id {:g} (line {}) by {:.3g} m = {:.3g} of its diameter "
+                  "(tolerance {:g}); a packing must not overlap (regenerate it with brash-pack)",
+                  file.string(), lines[n], ids[n], ids[m], lines[m], ov, ov / std::min(a.diameter_m, b.diameter_m),
+                  kReadOverlapTolerance));
+          }
+        }
+    grid[key(ci, cj, ck)].push_back(n);
+  }
+}
+
+}  // namespace
+
 std::vector<Sphere> read_packing_csv(const fs::path& file) {
+  if (fs::is_directory(file)) throw InputError(file.string() + ": is a directory, not a packing file");
   std::ifstream in(file);
   if (!in) throw InputError(file.string() + ": cannot open packing file");
   std::vector<Sphere> out;
+  std::vector<std::size_t> lines;
+  std::vector<double> ids;
   std::string line;
   bool header = false;
   for (std::size_t ln = 1; std::getline(in, line); ++ln) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty() || line[0] == '#') continue;
     if (!header) {
       if (line != "id,x,y,z,diameter")
@@ -497,6 +547,10 @@ std::vector<Sphere> read_packing_csv(const fs::path& file) {
       header = true;
       continue;
     }
+    const auto columns = 1 + std::count(line.begin(), line.end(), ',');
+    if (columns != 5)
+      throw InputError(fmt::format("{}:{}: expected 5 columns (id,x,y,z,diameter), got {} in '{}'{}", file.string(),
+                                   ln, columns, line, columns < 5 ? " (truncated line?)" : ""));
     double v[5];
     const char* p = line.data();
     const char* end = line.data() + line.size();
@@ -509,8 +563,11 @@ std::vector<Sphere> read_packing_csv(const fs::path& file) {
     }
     if (!(v[4] > 0)) throw InputError(fmt::format("{}:{}: diameter must be > 0", file.string(), ln));
     out.push_back({v[1], v[2], v[3], v[4]});
+    lines.push_back(ln);
+    ids.push_back(v[0]);
   }
   if (!header) throw InputError(file.string() + ": no 'id,x,y,z,diameter' header");
+  check_no_overlap(file, out, lines, ids);
   return out;
 }
 

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <string_view>
 
 namespace {
 
@@ -108,6 +109,11 @@ int main(int argc, char** argv) {
   check->add_option("--lpp", check_lpp, "length between perpendiculars in m (default: waterline length)");
   check->add_option("--json", json_out, "also write the JSON here");
 
+  // CLI11 only says "A subcommand is required" for a mistyped command: name it.
+  if (argc > 1 && argv[1][0] != '-' && std::string_view(argv[1]) != "jbc" && std::string_view(argv[1]) != "check") {
+    std::cerr << "brash-hull: unknown command '" << argv[1] << "' (expected jbc | check; see --help)\n";
+    return 109;
+  }
   CLI11_PARSE(app, argc, argv);
   try {
     if (jbc->parsed()) return run_jbc(out, lpp, grid, data);

@@ -130,9 +130,17 @@ struct Case {
   bool operator==(const Case&) const = default;
 };
 
+// Contact time-step limit: smallest ice sphere radius (mean - truncation_sd * sd) / 2, its Rayleigh time
+// T_R = pi r sqrt(rho_i / G) / (0.1631 nu + 0.8766), G = E / (2 (1 + nu)), and the largest accepted
+// run.timestep_s / T_R (the loader rejects larger steps; docs/stability.md).
+inline constexpr double kMaxTimestepOverRayleigh = 0.3;
+double min_radius_m(const Case& c);
+double rayleigh_time_s(const Case& c);
+
 // Reads, validates and resolves a case file. Throws brash::InputError naming the file, the key
 // (e.g. "ice.porosity") and the line where known, for: unreadable file, YAML syntax, unknown key,
-// wrong type, NaN/inf, out-of-range value, unknown enum text, inconsistent values.
+// wrong type, NaN/inf, out-of-range value, unknown enum text, inconsistent values (including a
+// run.timestep_s above kMaxTimestepOverRayleigh of the Rayleigh time).
 Case load_case(const std::filesystem::path& case_yaml);
 
 // Same, from YAML text; relative paths resolve against base_dir; `source` names it in messages.
