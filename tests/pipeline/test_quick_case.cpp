@@ -45,5 +45,20 @@ TEST(Pipeline, QuickCaseLiggghtsToReport) {
   EXPECT_NEAR(r["resistance_full_kN"].get<double>(),
               r["resistance_model_N"]["mean"].get<double>() * 28.5 * 28.5 * 28.5 / 1000, 1e-6);
   EXPECT_GT(r["fsicr"]["R_CH_kN"].get<double>(), 100.0);
+
+  // ParaView files of the real run: the .pvd collection and its last particle file read back by meshio
+  // (Debian's python3-meshio) with every field.
+  ASSERT_TRUE(fs::exists(out / "particles.pvd"));
+  ASSERT_TRUE(fs::exists(out / "hull.pvd"));
+  fs::path last_vtu;
+  for (const auto& e : fs::directory_iterator(out / "paraview"))
+    if (e.path().filename().string().rfind("particles_", 0) == 0 && e.path().string() > last_vtu.string())
+      last_vtu = e.path();
+  ASSERT_FALSE(last_vtu.empty());
+  const std::string py = "/usr/bin/python3 -c \"import meshio,sys; m=meshio.read(sys.argv[1]); "
+                         "f=set(m.point_data); need={'radius','velocity','submerged_fraction','ca'}; "
+                         "assert need<=f, f; assert len(m.points)>8000; "
+                         "assert m.point_data['ca'].shape[1]==3\" '" + last_vtu.string() + "'";
+  EXPECT_EQ(std::system(py.c_str()), 0) << py;
   fs::remove_all(out);
 }
