@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <fmt/format.h>
 
 namespace brash::liggghts {
@@ -35,7 +36,7 @@ std::string data_file(const std::vector<Sphere>& spheres, const Box& box, double
   return s;
 }
 
-std::string input_script(const Case& c, const Box&, const SceneOptions& opt) {
+std::string input_script(const Case& c, const Box& box, const SceneOptions& opt) {
   const double dt = c.run.timestep_s;
   const long steps = std::lround(opt.duration_s / dt);
   const long out_every = std::max(1L, std::lround(c.run.output_interval_s / dt));
@@ -73,6 +74,18 @@ std::string input_script(const Case& c, const Box&, const SceneOptions& opt) {
   s += "fix integr all nve/sphere\n";
   s += fmt::format("fix grav all gravity {:.9g} vector 0 0 -1\n", c.water.gravity_m_s2);
   s += "fix ts all check/timestep/gran 1000 0.1 0.1\n";
+  // run-time guards (END_OF_STEP, reads only): NaN/Inf, atoms about to leave the box or jumping far above the
+  // water, runaway kinetic energy (largest sphere at 20x ship speed, at least 5 m/s), dt vs contact stiffness
+  const double gd = 0.25 * c.ice.diameter_mean_m;
+  const double dmax = c.ice.diameter_mean_m + c.ice.diameter_truncation_sd * c.ice.diameter_sd_m;
+  const double vmax = std::max(20 * c.ship.speed_m_s, 5.0);
+  const double ke_max = 0.5 * c.ice.density_kg_m3 * std::numbers::pi / 6 * dmax * dmax * dmax * vmax * vmax;
+  s += fmt::format(
+      "fix guard all brash/guard every 10 box {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} zmax {:.9g} ke_max {:.6g} "
+      "youngs {:g} poisson {:g} max_dt_fraction {:g}\n",
+      box.xlo + gd, box.xhi - gd, box.ylo + gd, box.yhi - gd, box.zlo + gd, box.zhi - gd,
+      std::min(box.zhi - gd, c.water.level_m + 5 * c.ice.thickness_m), ke_max, c.contact.youngs_modulus_pa,
+      c.contact.poisson_ratio, kMaxTimestepOverRayleigh);
   // fluid forces last: implicit added mass scales the sum of all other forces
   s += fmt::format(
       "fix fl all icefluid model {} treatment {} cd {:.9g} drag_law {} nu {:.9g} ca {} water_level {:.9g} "
