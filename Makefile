@@ -10,6 +10,7 @@ DEB_PACKAGES := g++ make cmake ninja-build pkg-config \
   libgtest-dev libgmock-dev libbenchmark-dev valgrind \
   liggghts libliggghts-dev openmpi-bin libopenmpi-dev \
   libode-dev libvtk9-dev gnuplot-nox python3-meshio python3-numpy python3-vtk9 \
+  clang libclang-rt-14-dev \
   yade pybind11-dev python3-dev
 
 .PHONY: deps build test run bench clean
