@@ -112,6 +112,10 @@ struct Reader {
                  std::initializer_list<std::string_view> known) const {
     if (!n.IsMap()) fail(n, where.empty() ? "<top>" : where, "expected a mapping of keys");
     for (const auto& kv : n) {
+      // A list or mapping used as a key ("{[0.1, 0.1]}") has no text: yaml-cpp's as<string> would throw
+      // its own exception (found by tests/fuzz/fuzz_case).
+      if (!kv.first.IsScalar())
+        fail(kv.first, where.empty() ? "<top>" : where, "keys must be plain names, got a list or mapping as a key");
       const std::string k = kv.first.as<std::string>();
       if (std::find(known.begin(), known.end(), k) == known.end()) {
         std::string list;
@@ -180,6 +184,18 @@ struct Reader {
     fail(v, key, fmt::format("unknown value '{}' (one of: {})", v.Scalar(), list));
   }
 
+  void boolean(const YAML::Node& sec, const std::string& where, std::string_view k, bool& out) const {
+    const YAML::Node v = sec[std::string(k)];
+    if (!v.IsDefined()) return;
+    const std::string key = join(where, k);
+    if (!v.IsScalar()) fail(v, key, "expected true or false");
+    try {
+      out = v.as<bool>();
+    } catch (const YAML::Exception&) {
+      fail(v, key, fmt::format("expected true or false, got '{}'", v.Scalar()));
+    }
+  }
+
   std::array<double, 2> pair(const YAML::Node& v, const std::string& key) const {
     if (!v.IsSequence() || v.size() != 2) fail(v, key, "expected a list of two numbers [a, b]");
     return {to_double(v[0], key + "[0]"), to_double(v[1], key + "[1]")};
@@ -211,7 +227,7 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
   }
   if (!root.IsDefined() || root.IsNull()) throw InputError(source + ": empty case file");
   r.check_map(root, "", {"name", "description", "hull", "ship", "channel", "ice", "water", "friction",
-                         "contact", "fluid", "run", "fsicr"});
+                         "contact", "fluid", "run", "fsicr", "speedups"});
 
   Case c;
   if (!root["name"].IsDefined()) throw InputError(source + ": key 'name': missing (required)");
@@ -361,6 +377,27 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
     r.opt_num(s, "fsicr", "L_bow_m", c.fsicr.L_bow_m);
     r.opt_num(s, "fsicr", "A_wf_m2", c.fsicr.A_wf_m2);
   }
+  {  // speedups (docs/performance.md)
+    const auto s = r.section(root, "speedups",
+                             {"farfield", "farfield_ahead_m", "farfield_behind_m", "farfield_every_steps",
+                              "symmetry_y", "neighbor_skin_d"});
+    r.boolean(s, "speedups", "farfield", c.speedups.farfield);
+    r.num(s, "speedups", "farfield_ahead_m", c.speedups.farfield_ahead_m, non_negative, ">= 0");
+    r.num(s, "speedups", "farfield_behind_m", c.speedups.farfield_behind_m, non_negative, ">= 0");
+    double every = c.speedups.farfield_every_steps;
+    r.num(s, "speedups", "farfield_every_steps", every,
+          [](double n) { return n >= 1 && n <= 1e6 && n == std::floor(n); }, "an integer in [1, 1000000]");
+    c.speedups.farfield_every_steps = static_cast<int>(every);
+    r.boolean(s, "speedups", "symmetry_y", c.speedups.symmetry_y);
+    r.num(s, "speedups", "neighbor_skin_d", c.speedups.neighbor_skin_d,
+          [](double k) { return k > 0 && k <= 2; }, "in (0, 2]");
+    // Ice is disturbed up to a few diameters ahead of the bow; an idle zone that starts closer
+    // would stop pieces the bow is already pushing.
+    if (c.speedups.farfield && c.speedups.farfield_ahead_m < 2 * c.ice.diameter_mean_m)
+      r.fail(s["farfield_ahead_m"], "speedups.farfield_ahead_m",
+             fmt::format("{} m is less than 2 ice diameters ({} m): the bow would push idle ice",
+                         c.speedups.farfield_ahead_m, 2 * c.ice.diameter_mean_m));
+  }
   return c;
 }
 
@@ -481,6 +518,13 @@ std::string dump_case_yaml(const Case& c) {
   for (const auto& [k, v] : fs_keys)
     if (v->has_value()) fsicr += fmt::format("  {}: {}\n", k, num(**v));
   o += fsicr.empty() ? "fsicr: {}\n" : "fsicr:\n" + fsicr;
+  o += "speedups:\n";
+  line("  ", "farfield", c.speedups.farfield ? "true" : "false");
+  line("  ", "farfield_ahead_m", num(c.speedups.farfield_ahead_m));
+  line("  ", "farfield_behind_m", num(c.speedups.farfield_behind_m));
+  line("  ", "farfield_every_steps", fmt::format("{}", c.speedups.farfield_every_steps));
+  line("  ", "symmetry_y", c.speedups.symmetry_y ? "true" : "false");
+  line("  ", "neighbor_skin_d", num(c.speedups.neighbor_skin_d));
   return o;
 }
 

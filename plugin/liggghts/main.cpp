@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "fix_brash_farfield.h"
 #include "fix_brash_guard.h"
 #include "fix_icefluid.h"
 #include "input.h"
@@ -25,6 +26,7 @@ int main(int argc, char** argv) {
   }
   auto* lmp = new LAMMPS_NS::LAMMPS(argc, argv, MPI_COMM_WORLD);
   brash::liggghts::register_fix_style<brash::liggghts::FixIceFluid>(lmp, "icefluid");
+  brash::liggghts::register_fix_style<brash::liggghts::FixBrashFarfield>(lmp, "brash/farfield");
   brash::liggghts::register_fix_style<brash::liggghts::FixBrashGuard>(lmp, "brash/guard");
   lmp->input->file();
   delete lmp;

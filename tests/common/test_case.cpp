@@ -143,6 +143,12 @@ TEST(CaseLoader, DumpThenLoadGivesTheSameCase) {
     c.ship.ice_class = brash::IceClass::IA_super;
     c.ice.packing_mode = brash::PackingMode::StrictTwoLayer;
     c.contact.youngs_modulus_pa = 5e6;
+    c.speedups.farfield = true;
+    c.speedups.farfield_ahead_m = 0.7;
+    c.speedups.farfield_behind_m = 1.0 / 3.0;
+    c.speedups.farfield_every_steps = 37;
+    c.speedups.symmetry_y = true;
+    c.speedups.neighbor_skin_d = 0.35;
     const fs::path run = temp_dir(std::string("rt_") + name);
     const Case back = brash::load_case(write_case(run, brash::dump_case_yaml(c)));
     EXPECT_EQ(back, c) << brash::dump_case_yaml(c) << "\n---\n" << brash::dump_case_yaml(back);
@@ -201,6 +207,35 @@ TEST(CaseLoaderErrors, OtherChecks) {
   expect_error("name: x\nrun: {timestep_s: 0.1, output_interval_s: 0.01}\n", {"run.timestep_s"});
   expect_error("name: x\ncontact: {poisson_ratio: 0.6}\n", {"contact.poisson_ratio"});
   expect_error("name: [x\n", {"YAML syntax"});
+}
+
+TEST(CaseLoader, SpeedupsDefaultOffAndRead) {
+  const Case d = brash::parse_case("name: x\n", kRepo, "mem");
+  EXPECT_FALSE(d.speedups.farfield);
+  EXPECT_FALSE(d.speedups.symmetry_y);
+  EXPECT_DOUBLE_EQ(d.speedups.neighbor_skin_d, 0.2);
+  const Case c = brash::parse_case(
+      "name: x\nspeedups:\n  farfield: true\n  farfield_ahead_m: 0.5\n  farfield_behind_m: 2\n"
+      "  farfield_every_steps: 50\n  symmetry_y: yes\n  neighbor_skin_d: 0.3\n",
+      kRepo, "mem");
+  EXPECT_TRUE(c.speedups.farfield);
+  EXPECT_DOUBLE_EQ(c.speedups.farfield_ahead_m, 0.5);
+  EXPECT_DOUBLE_EQ(c.speedups.farfield_behind_m, 2.0);
+  EXPECT_EQ(c.speedups.farfield_every_steps, 50);
+  EXPECT_TRUE(c.speedups.symmetry_y);
+  EXPECT_DOUBLE_EQ(c.speedups.neighbor_skin_d, 0.3);
+}
+
+TEST(CaseLoaderErrors, SpeedupsKeysNamed) {
+  expect_error("name: x\nspeedups:\n  farfeld: true\n", {"speedups.farfeld", "unknown key", ":3:"});
+  expect_error("name: x\nspeedups: {farfield: maybe}\n", {"speedups.farfield", "true or false"});
+  expect_error("name: x\nspeedups: {farfield_every_steps: 2.5}\n", {"speedups.farfield_every_steps", "integer"});
+  expect_error("name: x\nspeedups: {farfield_every_steps: 0}\n", {"speedups.farfield_every_steps"});
+  expect_error("name: x\nspeedups: {farfield_ahead_m: -1}\n", {"speedups.farfield_ahead_m", ">= 0"});
+  expect_error("name: x\nspeedups: {farfield: true, farfield_ahead_m: 0.01}\n",
+               {"speedups.farfield_ahead_m", "2 ice diameters"});
+  expect_error("name: x\nspeedups: {neighbor_skin_d: 0}\n", {"speedups.neighbor_skin_d", "(0, 2]"});
+  expect_error("name: x\nspeedups: {symmetry_y: [1]}\n", {"speedups.symmetry_y"});
 }
 
 TEST(CaseLoaderErrors, MissingFile) {

@@ -108,6 +108,18 @@ struct RunSpec {
   bool operator==(const RunSpec&) const = default;
 };
 
+// Speed-up switches (docs/performance.md). Every switch is off by default; with all of them off the
+// scene is the brute-force one.
+struct SpeedupSpec {
+  bool farfield = false;                // idle far-field ice: not integrated, no contacts among idle pieces
+  double farfield_ahead_m = 1.0;        // idle: more than this ahead of the bow
+  double farfield_behind_m = 1.0;       // idle: more than this behind the stern
+  int farfield_every_steps = 100;       // membership update period [steps]
+  bool symmetry_y = false;              // half channel y >= 0, frictionless wall at y = 0, forces x 2
+  double neighbor_skin_d = 0.2;         // neighbour-list skin in mean sphere diameters
+  bool operator==(const SpeedupSpec&) const = default;
+};
+
 // Optional overrides of the FSICR hull parameters measured on the STL (full scale).
 struct FsicrOverrides {
   std::optional<double> alpha_deg, phi1_deg, phi2_deg, psi_deg, L_par_m, L_bow_m, A_wf_m2;
@@ -127,6 +139,7 @@ struct Case {
   FluidSpec fluid;
   RunSpec run;
   FsicrOverrides fsicr;
+  SpeedupSpec speedups;
   bool operator==(const Case&) const = default;
 };
 

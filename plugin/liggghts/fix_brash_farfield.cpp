@@ -1,0 +1,150 @@
+// fix brash/farfield: idle far-field ice. See fix_brash_farfield.h for the command and the hooks.
+#include "fix_brash_farfield.h"
+
+#include <mpi.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+#include "atom.h"
+#include "error.h"
+#include "group.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+namespace brash::liggghts {
+namespace {
+
+double to_number(Error* error, const std::string& keyword, const char* text) {
+  char* end = nullptr;
+  const double v = std::strtod(text, &end);
+  if (end == text || *end != '\0' || !std::isfinite(v)) {
+    const std::string msg = "fix brash/farfield: keyword '" + keyword + "' expects a number, got '" + text + "'";
+    error->all(FLERR, msg.c_str());
+  }
+  return v;
+}
+
+}  // namespace
+
+FixBrashFarfield::FixBrashFarfield(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) {
+  for (int iarg = 3; iarg < narg;) {
+    const std::string key = arg[iarg];
+    if (iarg + 1 >= narg) {
+      const std::string msg = "fix brash/farfield: keyword '" + key + "' needs a value";
+      error->all(FLERR, msg.c_str());
+    }
+    const char* val = arg[iarg + 1];
+    if (key == "every") {
+      const double n = to_number(error, key, val);
+      if (n < 1 || n != std::floor(n) || n > 1e9) error->all(FLERR, "fix brash/farfield: 'every' must be an integer >= 1");
+      every_ = static_cast<int>(n);
+    } else if (key == "ahead") {
+      ahead_ = to_number(error, key, val), have_ahead_ = true;
+      if (ahead_ < 0) error->all(FLERR, "fix brash/farfield: 'ahead' must be >= 0");
+    } else if (key == "behind") {
+      behind_ = to_number(error, key, val), have_behind_ = true;
+      if (behind_ < 0) error->all(FLERR, "fix brash/farfield: 'behind' must be >= 0");
+    } else if (key == "hull_x0") {
+      hull_x0_ = to_number(error, key, val), have_x0_ = true;
+    } else if (key == "speed") {
+      speed_ = to_number(error, key, val), have_speed_ = true;
+    } else if (key == "bow_offset") {
+      bow_offset_ = to_number(error, key, val), have_bow_ = true;
+    } else if (key == "stern_offset") {
+      stern_offset_ = to_number(error, key, val), have_stern_ = true;
+    } else if (key == "active") {
+      active_name_ = val;
+    } else if (key == "idle") {
+      idle_name_ = val;
+    } else {
+      const std::string msg = "fix brash/farfield: unknown keyword '" + key +
+                              "' (expected every, ahead, behind, hull_x0, speed, bow_offset, stern_offset, active, idle)";
+      error->all(FLERR, msg.c_str());
+    }
+    iarg += 2;
+  }
+  if (!(have_ahead_ && have_behind_ && have_x0_ && have_speed_ && have_bow_ && have_stern_))
+    error->all(FLERR,
+               "fix brash/farfield: keywords ahead, behind, hull_x0, speed, bow_offset and stern_offset are required");
+  if (stern_offset_ > bow_offset_) error->all(FLERR, "fix brash/farfield: stern_offset must be <= bow_offset");
+  const int ia = group->find(active_name_.c_str()), ii = group->find(idle_name_.c_str());
+  if (ia < 0 || ii < 0) {
+    const std::string msg = "fix brash/farfield: groups '" + active_name_ + "' and '" + idle_name_ +
+                            "' must exist (e.g. group " + active_name_ + " type 1; group " + idle_name_ +
+                            " subtract all all)";
+    error->all(FLERR, msg.c_str());
+  }
+  if (ia == igroup || ii == igroup || ia == ii)
+    error->all(FLERR, "fix brash/farfield: the fix group, the active group and the idle group must differ");
+  active_bit_ = group->bitmask[ia];
+  idle_bit_ = group->bitmask[ii];
+  if (!atom->omega_flag) error->all(FLERR, "fix brash/farfield requires per-atom omega (atom_style granular/sphere)");
+
+  force_reneighbor = 1;
+  next_reneighbor = -1;
+  vector_flag = 1;
+  size_vector = 2;
+  global_freq = 1;
+  extvector = 0;
+}
+
+int FixBrashFarfield::setmask() { return PRE_EXCHANGE; }
+
+void FixBrashFarfield::init() {
+  // the group bits were looked up at creation; a deleted group would leave stale bits
+  if (group->find(active_name_.c_str()) < 0 || group->find(idle_name_.c_str()) < 0)
+    error->all(FLERR, "fix brash/farfield: the active or idle group was deleted");
+}
+
+// Before the first neighbour build of a run: membership for the current position of the hull.
+void FixBrashFarfield::setup_pre_exchange() {
+  update_membership();
+  next_reneighbor = update->ntimestep + every_;
+}
+
+// Called only on re-neighbour steps (before exchange and borders); updates when a period has passed.
+// The forced re-neighbour at next_reneighbor makes the update happen no later than every N steps.
+void FixBrashFarfield::pre_exchange() {
+  if (update->ntimestep < next_reneighbor) return;
+  update_membership();
+  next_reneighbor = update->ntimestep + every_;
+}
+
+void FixBrashFarfield::update_membership() {
+  const double t = static_cast<double>(update->ntimestep) * update->dt;
+  const double bow = hull_x0_ + bow_offset_ + speed_ * t, stern = hull_x0_ + stern_offset_ + speed_ * t;
+  const double x_hi = bow + ahead_, x_lo = stern - behind_;
+  double** x = atom->x;
+  double** v = atom->v;
+  double** omega = atom->omega;
+  int* mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  double local[2] = {0, 0};  // idle, changed
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const bool idle = x[i][0] > x_hi || x[i][0] < x_lo;
+    const bool was_idle = (mask[i] & idle_bit_) != 0;
+    if (idle) {
+      mask[i] = (mask[i] | idle_bit_) & ~active_bit_;
+      v[i][0] = v[i][1] = v[i][2] = 0;
+      omega[i][0] = omega[i][1] = omega[i][2] = 0;
+      local[0] += 1;
+    } else {
+      mask[i] = (mask[i] | active_bit_) & ~idle_bit_;
+    }
+    if (idle != was_idle) local[1] += 1;
+  }
+  double global[2];
+  MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, world);
+  n_idle_ = global[0];
+  n_changed_ = global[1];
+}
+
+double FixBrashFarfield::compute_vector(int i) { return i == 0 ? n_idle_ : n_changed_; }
+
+}  // namespace brash::liggghts

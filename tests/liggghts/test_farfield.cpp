@@ -1,0 +1,145 @@
+// fix brash/farfield (speedups.farfield) on a tiny scene: a row of separated spheres along x, pushed along
+// +y by a force on group `active` only, while a "hull" window [U t - behind, U t + bow + ahead] sweeps +x.
+// Idle spheres do not move and have zero velocity, active ones move, membership follows the hull, and
+// idle-idle pairs leave the neighbour list at the next build after their mask bits change (1 and 2 ranks).
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include <map>
+
+#include "liggghts_runner.h"
+
+using brash::test::fresh_dir;
+using brash::test::read_table;
+using brash::test::read_text;
+using brash::test::run_liggghts;
+
+namespace {
+constexpr double kD = 0.02, kU = 0.5, kDt = 1e-3;
+constexpr int kSteps = 1000;
+// window at time t: x in [U t + stern - behind, U t + bow + ahead] with stern 0, bow 0.1, ahead 0.2, behind 0.1
+constexpr double kAhead = 0.2, kBehind = 0.1, kBow = 0.1;
+
+std::string scene(bool farfield, int ranks) {
+  std::string s = fmt::format(R"(atom_style granular
+atom_modify map array sort 0 0.0
+boundary f f f
+newton off
+communicate single vel yes
+units si
+{procs}region reg block -0.1 1.1 -0.5 0.5 -0.1 0.1 units box
+create_box 1 reg
+)",
+                              fmt::arg("procs", ranks > 1 ? "processors 2 1 1\n" : ""));
+  // 20 separated spheres (ids 1..20) at x = 0.025 + 0.05 k, then three touching pairs (ids 21..26):
+  // at x = 0.05 (active, then left behind), 0.6 (idle, then reached), 0.95 (idle throughout).
+  for (int k = 0; k < 20; ++k) s += fmt::format("create_atoms 1 single {} 0 0 units box\n", 0.025 + 0.05 * k);
+  for (double x : {0.05, 0.6, 0.95})
+    s += fmt::format("create_atoms 1 single {0} 0.2 0 units box\ncreate_atoms 1 single {0} {1} 0 units box\n", x,
+                     0.2 + kD);
+  s += fmt::format(R"(set group all diameter {d} density 900
+{groups}neighbor 0.002 bin
+neigh_modify delay 0{exclude}
+fix m1 all property/global youngsModulus peratomtype 5.e6
+fix m2 all property/global poissonsRatio peratomtype 0.3
+fix m3 all property/global coefficientRestitution peratomtypepair 1 0.3
+fix m4 all property/global coefficientFriction peratomtypepair 1 0.5
+pair_style gran model hertz tangential history
+pair_coeff * *
+timestep {dt}
+{ff}fix integr {grp} nve/sphere
+fix push {grp} addforce 0 1e-3 0
+dump d all custom {steps} dump.*.txt id x y z vx vy vz
+dump_modify d sort id
+thermo_style custom step atoms {thermo}
+thermo 100
+run {steps}
+)",
+                   fmt::arg("d", kD), fmt::arg("dt", kDt), fmt::arg("steps", kSteps),
+                   fmt::arg("groups", farfield ? "group active type 1\ngroup idle subtract all all\n" : ""),
+                   fmt::arg("exclude", farfield ? " exclude group idle idle" : ""),
+                   fmt::arg("ff", farfield ? fmt::format("fix ff all brash/farfield every 10 ahead {} behind {} hull_x0 0 "
+                                                         "speed {} bow_offset {} stern_offset 0\n",
+                                                         kAhead, kBehind, kU, kBow)
+                                           : ""),
+                   fmt::arg("grp", farfield ? "active" : "all"), fmt::arg("thermo", farfield ? "f_ff[1] f_ff[2]" : "ke"));
+  return s;
+}
+
+struct Atom {
+  double x, y, vy;
+};
+std::map<int, Atom> read_dump(const std::filesystem::path& file) {
+  std::map<int, Atom> out;
+  for (const auto& r : read_table(file))
+    if (r.size() == 7) out[static_cast<int>(r[0])] = {r[1], r[2], r[5]};
+  return out;
+}
+
+long total_neighbors(const std::string& screen) {
+  const auto pos = screen.rfind("Total # of neighbors = ");
+  if (pos == std::string::npos) return -1;
+  return std::stol(screen.substr(pos + 23));
+}
+
+void check_farfield(int ranks) {
+  const auto dir = fresh_dir(fmt::format("farfield{}", ranks));
+  ASSERT_EQ(run_liggghts(dir, scene(true, ranks), ranks), 0) << read_text(dir / "screen_in.lmp.txt");
+  const auto start = read_dump(dir / "dump.0.txt"), end = read_dump(dir / fmt::format("dump.{}.txt", kSteps));
+  ASSERT_EQ(start.size(), 26u);
+  ASSERT_EQ(end.size(), 26u);
+  // last membership update at step 1000 (t = 1 s): window [0.4, 0.8]; the one before, at step 990, set who
+  // was integrated during the last 10 steps.
+  const double t_end = kSteps * kDt, lo = kU * t_end - kBehind, hi = kU * t_end + kBow + kAhead;
+  int idle = 0;
+  for (const auto& [id, a] : end) {
+    const Atom& a0 = start.at(id);
+    const bool idle_now = a.x < lo || a.x > hi;
+    const bool idle_always = a0.x > kU * 0.99 + kBow + kAhead + 1e-9;  // ahead of the window all run long
+    if (idle_now) {
+      ++idle;
+      EXPECT_EQ(a.vy, 0.0) << "idle atom " << id << " at x = " << a.x << " still moves";
+    }
+    if (idle_always) {
+      EXPECT_EQ(a.y, a0.y) << "atom " << id << " at x = " << a0.x << " was idle but moved";
+    }
+    const bool active_before = a.x >= kU * 0.99 - kBehind && a.x <= kU * 0.99 + kBow + kAhead;  // at step 990
+    if (!idle_now && active_before) {
+      EXPECT_GT(a.vy, 0.0) << "active atom " << id << " at x = " << a.x << " does not move";
+    }
+    if (a0.x < kBow + kAhead && a0.x > 0) {  // active at the start: was pushed, then left behind and stopped
+      EXPECT_GT(a.y, a0.y + 1e-3) << "atom " << id << " at x = " << a0.x << " was active at the start";
+    }
+  }
+  const std::string screen = read_text(dir / "screen_in.lmp.txt");
+  EXPECT_GT(idle, 10);
+  // Only the pair at x = 0.6 is active at the end: the pair left behind (made idle by a mask change) and the
+  // pair idle from the start are not in the neighbour list.
+  EXPECT_EQ(total_neighbors(screen), 1) << screen;
+}
+
+}  // namespace
+
+TEST(LiggghtsFarfield, IdleAtomsStillActiveAtomsMoveOneRank) { check_farfield(1); }
+TEST(LiggghtsFarfield, IdleAtomsStillActiveAtomsMoveTwoRanks) { check_farfield(2); }
+
+TEST(LiggghtsFarfield, WithoutTheFixAllPairsAreNeighbours) {
+  const auto dir = fresh_dir("farfield_off");
+  ASSERT_EQ(run_liggghts(dir, scene(false, 1)), 0) << read_text(dir / "screen_in.lmp.txt");
+  EXPECT_EQ(total_neighbors(read_text(dir / "screen_in.lmp.txt")), 3);
+}
+
+TEST(LiggghtsFarfield, BadArgumentsAreNamed) {
+  const auto dir = fresh_dir("farfield_bad");
+  std::string in = scene(true, 1);
+  const auto pos = in.find("fix ff all brash/farfield");
+  const auto eol = in.find('\n', pos);
+  in.replace(pos, eol - pos, "fix ff all brash/farfield every 10 ahead 0.2 behind 0.1 speed 0.5 bow_offset 0.1 stern_offset 0");
+  EXPECT_NE(run_liggghts(dir, in), 0);
+  EXPECT_NE(read_text(dir / "screen_in.lmp.txt").find("are required"), std::string::npos);
+  in.replace(pos, in.find('\n', pos) - pos, "fix ff all brash/farfield every 10 ahead 0.2 behind 0.1 hull_x0 0 speed 0.5 "
+                                           "bow_offset 0.1 stern_offset 0 idle nosuchgroup");
+  EXPECT_NE(run_liggghts(dir, in), 0);
+  EXPECT_NE(read_text(dir / "screen_in.lmp.txt").find("must exist"), std::string::npos);
+}
