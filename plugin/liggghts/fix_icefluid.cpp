@@ -12,7 +12,6 @@
 #include "modify.h"
 #include "update.h"
 
-#include "brash/core/fluid.hpp"
 #include "brash/error.hpp"
 
 using namespace LAMMPS_NS;
@@ -132,47 +131,27 @@ void FixIceFluid::init() {
 
 void FixIceFluid::setup(int) {
   // Forces at the start of a run feed the first half kick. A sphere with history (continued run or
-  // restart) reuses the fluid force and scale of its last evaluation at this same position, so a
-  // restarted run continues exactly like an uninterrupted one.
+  // restart) replays its last evaluation at this same position (see kernel.hpp), so a restarted run
+  // continues exactly like an uninterrupted one.
   compute(true);
 }
 
 void FixIceFluid::post_force(int) { compute(false); }
 
-void FixIceFluid::compute(bool reuse_last) {
-  double** x = atom->x;
-  double** v = atom->v;
-  double** f = atom->f;
-  const double* radius = atom->radius;
-  const double* rmass = atom->rmass;
-  const int* mask = atom->mask;
-  const int nlocal = atom->nlocal;
-  const double dt = update->dt;
-
-  for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    double* st = state_[i];
-    double* out = output_[i];
-    if (reuse_last && st[3] != 0.0) {
-      for (int k = 0; k < 3; k++) f[i][k] = (f[i][k] + st[4 + k]) * st[7 + k];
-      continue;
-    }
-    const core::FluidState state{core::Vec3(st[0], st[1], st[2]), st[3] != 0.0};
-    const core::Sphere sphere{radius[i], rmass[i], core::Vec3(x[i][0], x[i][1], x[i][2]),
-                              core::Vec3(v[i][0], v[i][1], v[i][2])};
-    const core::FluidOutput r = core::evaluate(params_, sphere, state, dt);
-    for (int k = 0; k < 3; k++) {
-      f[i][k] = (f[i][k] + r.force_N[k]) * r.scale[k];
-      st[k] = v[i][k];
-      st[4 + k] = r.force_N[k];
-      st[7 + k] = r.scale[k];
-    }
-    st[3] = 1.0;
-    out[0] = r.immersion.fraction;
-    out[1] = r.ca.x();
-    out[2] = r.ca.y();
-    out[3] = r.ca.z();
-  }
+void FixIceFluid::compute(bool replay) {
+  if (atom->nlocal == 0) return;
+  core::KernelArrays a;  // LIGGGHTS' per-atom 2-d arrays are contiguous blocks: row 0 is the data
+  a.n = static_cast<std::size_t>(atom->nlocal);
+  a.radius_m = atom->radius;
+  a.mass_kg = atom->rmass;
+  a.x_m = atom->x[0];
+  a.v_m_s = atom->v[0];
+  a.f_N = atom->f[0];
+  a.state = state_[0];
+  a.output = output_[0];
+  a.mask = atom->mask;
+  a.groupbit = groupbit;
+  core::apply_kernel(params_, a, update->dt, replay);
 }
 
 void FixIceFluid::grow_arrays(int nmax) {

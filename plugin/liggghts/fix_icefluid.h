@@ -23,6 +23,7 @@
 
 #include "fix.h"
 
+#include "brash/core/kernel.hpp"
 #include "brash/core/params.hpp"
 
 namespace brash::liggghts {
@@ -51,12 +52,11 @@ class FixIceFluid : public LAMMPS_NS::Fix {
   const brash::core::FluidParams& params() const { return params_; }
 
  private:
-  // Per-atom state carried across steps, migration and restart:
-  // [0..2] velocity at the last evaluation, [3] has_prev, [4..6] last fluid force, [7..9] last scale.
-  static constexpr int kStateSize = 10;
-  static constexpr int kOutputSize = 4;  // submerged fraction, Ca x, y, z
+  // Per-atom state carried across steps, migration and restart: the core kernel's layout (kernel.hpp).
+  static constexpr int kStateSize = brash::core::kStateStride;
+  static constexpr int kOutputSize = brash::core::kOutputStride;  // submerged fraction, Ca x, y, z
 
-  void compute(bool reuse_last);
+  void compute(bool replay);
   void parse(int narg, char** arg);
 
   brash::core::FluidParams params_;
