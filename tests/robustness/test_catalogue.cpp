@@ -170,6 +170,11 @@ std::vector<Entry> catalogue() {
                        {"{dir}/case.yaml:2", "key 'contact.poisson_ratio'", "in (-1, 0.5)"}));
   c.push_back(bad_case("case_negative_band", "name: x\nhull: {band_m: [-0.1, 0.1]}\n",
                        {"{dir}/case.yaml:2", "key 'hull.band_m'", ">= 0"}));
+  // Found by fuzz_case (tests/fuzz): a list used as a key escaped as a yaml-cpp exception without the file name.
+  c.push_back(bad_case("case_list_as_key_fuzz_regression", "name: x\nrun: {duration_s: 4}\nfsicr: {[0.1, 0.1]}\n",
+                       {"{dir}/case.yaml:3", "key 'fsicr'", "keys must be plain names"}));
+  c.push_back(bad_case("case_mapping_as_top_key", "name: x\n? {a: 1}\n: 2\n",
+                       {"{dir}/case.yaml:2", "key '<top>'", "keys must be plain names"}));
   c.push_back(bad_case("case_yaml_syntax", "name: x\nice: {porosity: [0.3\n",
                        {"{dir}/case.yaml:", "YAML syntax error"}));
   c.push_back(bad_case("case_empty_file", "", {"{dir}/case.yaml", "empty case file"}));
