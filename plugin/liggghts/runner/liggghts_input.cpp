@@ -15,18 +15,53 @@ Box scene_box(const Case& c, double hull_x_min_m, double hull_x_max_m, double hu
   Box b;
   b.xlo = std::min(0.0, c.hull.start_x_m + hull_x_min_m) - 10 * d;
   b.xhi = std::max(c.channel.length_m, c.hull.start_x_m + hull_x_max_m + travel) + 10 * d;
-  b.ylo = -0.5 * c.channel.width_m - 2 * d;
+  b.ylo = c.speedups.symmetry_y ? -2 * d : -0.5 * c.channel.width_m - 2 * d;
   b.yhi = 0.5 * c.channel.width_m + 2 * d;
   b.zlo = std::min(hull_z_min_m - c.hull.draft_m, -6 * c.ice.thickness_m) - 2 * d;
   b.zhi = std::max(hull_z_max_m - c.hull.draft_m, 6 * c.ice.thickness_m) + 2 * d;
   return b;
 }
 
-std::string data_file(const std::vector<Sphere>& spheres, const Box& box, double ice_density_kg_m3) {
+std::vector<Sphere> half_channel_spheres(const std::vector<Sphere>& spheres) {
+  std::vector<Sphere> out;
+  for (const auto& p : spheres)
+    if (p.y_m >= 0.5 * p.diameter_m) out.push_back(p);
+  return out;
+}
+
+hull::Mesh half_hull(const hull::Mesh& mesh) {
+  // Each triangle clipped against y >= 0 (Sutherland-Hodgman): 0, 3 or 4 corners, fanned into triangles.
+  hull::Mesh out;
+  for (const auto& f : mesh.faces) {
+    std::vector<Eigen::Vector3d> poly;
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d& a = mesh.vertices[f[k]];
+      const Eigen::Vector3d& b = mesh.vertices[f[(k + 1) % 3]];
+      if (a.y() >= 0) poly.push_back(a);
+      if ((a.y() >= 0) != (b.y() >= 0)) {
+        Eigen::Vector3d p = a + (b - a) * (a.y() / (a.y() - b.y()));
+        p.y() = 0;
+        poly.push_back(p);
+      }
+    }
+    for (std::size_t k = 1; k + 1 < poly.size(); ++k) {
+      const Eigen::Vector3d e1 = poly[k] - poly[0], e2 = poly[k + 1] - poly[0];
+      if (e1.cross(e2).norm() < 1e-14) continue;  // sliver on the plane
+      const int n = static_cast<int>(out.vertices.size());
+      out.vertices.push_back(poly[0]);
+      out.vertices.push_back(poly[k]);
+      out.vertices.push_back(poly[k + 1]);
+      out.faces.push_back({n, n + 1, n + 2});
+    }
+  }
+  return out;
+}
+
+std::string data_file(const std::vector<Sphere>& spheres, const Box& box, double ice_density_kg_m3, int atom_types) {
   std::string s = fmt::format(
-      "brash channel packing\n\n{} atoms\n3 atom types\n\n{:.9g} {:.9g} xlo xhi\n{:.9g} {:.9g} ylo yhi\n"
+      "brash channel packing\n\n{} atoms\n{} atom types\n\n{:.9g} {:.9g} xlo xhi\n{:.9g} {:.9g} ylo yhi\n"
       "{:.9g} {:.9g} zlo zhi\n\nAtoms\n\n",
-      spheres.size(), box.xlo, box.xhi, box.ylo, box.yhi, box.zlo, box.zhi);
+      spheres.size(), atom_types, box.xlo, box.xhi, box.ylo, box.yhi, box.zlo, box.zhi);
   s.reserve(s.size() + spheres.size() * 80);
   for (std::size_t i = 0; i < spheres.size(); ++i) {
     const auto& p = spheres[i];
@@ -50,15 +85,31 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
   s += "communicate single vel yes\nunits si\n";
   s += opt.ranks > 1 ? "processors 1 * 1\n" : "";
   s += "read_data packing.data\n";
-  s += fmt::format("neighbor {:.6g} bin\nneigh_modify delay 0\n", 0.2 * c.ice.diameter_mean_m);
-  s += fmt::format(
-      "fix m1 all property/global youngsModulus peratomtype {0:g} {0:g} {0:g}\n"
-      "fix m2 all property/global poissonsRatio peratomtype {1:g} {1:g} {1:g}\n"
-      "fix m3 all property/global coefficientRestitution peratomtypepair 3 {2:g} {2:g} {2:g} {2:g} {2:g} {2:g} {2:g} "
-      "{2:g} {2:g}\n"
-      "fix m4 all property/global coefficientFriction peratomtypepair 3 {3:g} {4:g} {5:g} {4:g} {4:g} {4:g} {5:g} "
-      "{4:g} {5:g}\n",
-      c.contact.youngs_modulus_pa, c.contact.poisson_ratio, e, f.ice_ice, f.ice_hull, f.ice_wall);
+  // speedups (docs/performance.md): idle far-field ice lives in group `idle`, the rest in `active`
+  const auto& sp = c.speedups;
+  const std::string moving = sp.farfield ? "active" : "all";
+  if (sp.farfield) s += "group active type 1\ngroup idle subtract all all\n";
+  s += fmt::format("neighbor {:.6g} bin\nneigh_modify delay 0{}\n", sp.neighbor_skin_d * c.ice.diameter_mean_m,
+                   sp.farfield ? " exclude group idle idle" : "");
+  if (!sp.symmetry_y) {
+    s += fmt::format(
+        "fix m1 all property/global youngsModulus peratomtype {0:g} {0:g} {0:g}\n"
+        "fix m2 all property/global poissonsRatio peratomtype {1:g} {1:g} {1:g}\n"
+        "fix m3 all property/global coefficientRestitution peratomtypepair 3 {2:g} {2:g} {2:g} {2:g} {2:g} {2:g} {2:g} "
+        "{2:g} {2:g}\n"
+        "fix m4 all property/global coefficientFriction peratomtypepair 3 {3:g} {4:g} {5:g} {4:g} {4:g} {4:g} {5:g} "
+        "{4:g} {5:g}\n",
+        c.contact.youngs_modulus_pa, c.contact.poisson_ratio, e, f.ice_ice, f.ice_hull, f.ice_wall);
+  } else {  // type 4 = the symmetry plane y = 0: frictionless against ice
+    s += fmt::format(
+        "fix m1 all property/global youngsModulus peratomtype {0:g} {0:g} {0:g} {0:g}\n"
+        "fix m2 all property/global poissonsRatio peratomtype {1:g} {1:g} {1:g} {1:g}\n"
+        "fix m3 all property/global coefficientRestitution peratomtypepair 4 {2:g} {2:g} {2:g} {2:g} {2:g} {2:g} {2:g} "
+        "{2:g} {2:g} {2:g} {2:g} {2:g} {2:g} {2:g} {2:g} {2:g}\n"
+        "fix m4 all property/global coefficientFriction peratomtypepair 4 {3:g} {4:g} {5:g} 0 {4:g} {4:g} {4:g} 0 "
+        "{5:g} {4:g} {5:g} 0 0 0 0 0\n",
+        c.contact.youngs_modulus_pa, c.contact.poisson_ratio, e, f.ice_ice, f.ice_hull, f.ice_wall);
+  }
   s += "pair_style gran model hertz tangential history\npair_coeff * *\n";
   s += fmt::format("timestep {:.9g}\n", dt);
   // Hull: STL frame has the keel at z = 0 and x = 0 at the aft perpendicular.
@@ -66,13 +117,22 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
   s += fmt::format("fix hull all mesh/surface/stress file {} type 2 move {:.9g} 0 {:.9g} reference_point 0 0 0\n",
                    opt.hull_file, hull_x0, -c.hull.draft_m);
   s += "fix hullwall all wall/gran model hertz tangential history mesh n_meshes 1 meshes hull\n";
-  s += fmt::format("fix sides all wall/gran model hertz tangential history primitive type 3 yplane {:.9g}\n",
-                   -0.5 * c.channel.width_m);
+  if (sp.symmetry_y)
+    s += "fix sides all wall/gran model hertz tangential history primitive type 4 yplane 0\n";
+  else
+    s += fmt::format("fix sides all wall/gran model hertz tangential history primitive type 3 yplane {:.9g}\n",
+                     -0.5 * c.channel.width_m);
   s += fmt::format("fix sides2 all wall/gran model hertz tangential history primitive type 3 yplane {:.9g}\n",
                    0.5 * c.channel.width_m);
   s += fmt::format("fix mv all move/mesh mesh hull linear {:.9g} 0 0\n", c.ship.speed_m_s);
-  s += "fix integr all nve/sphere\n";
-  s += fmt::format("fix grav all gravity {:.9g} vector 0 0 -1\n", c.water.gravity_m_s2);
+  if (sp.farfield)
+    s += fmt::format(
+        "fix farfield all brash/farfield every {} ahead {:.9g} behind {:.9g} hull_x0 {:.9g} speed {:.9g} "
+        "bow_offset {:.9g} stern_offset {:.9g} active active idle idle\n",
+        sp.farfield_every_steps, sp.farfield_ahead_m, sp.farfield_behind_m, hull_x0, c.ship.speed_m_s,
+        opt.hull_x_max_m, opt.hull_x_min_m);
+  s += fmt::format("fix integr {} nve/sphere\n", moving);
+  s += fmt::format("fix grav {} gravity {:.9g} vector 0 0 -1\n", moving, c.water.gravity_m_s2);
   s += "fix ts all check/timestep/gran 1000 0.1 0.1\n";
   // run-time guards (END_OF_STEP, reads only): NaN/Inf, atoms about to leave the box or jumping far above the
   // water, runaway kinetic energy (largest sphere at 20x ship speed, at least 5 m/s), dt vs contact stiffness
@@ -88,13 +148,19 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
       c.contact.poisson_ratio, kMaxTimestepOverRayleigh);
   // fluid forces last: implicit added mass scales the sum of all other forces
   s += fmt::format(
-      "fix fl all icefluid model {} treatment {} cd {:.9g} drag_law {} nu {:.9g} ca {} water_level {:.9g} "
+      "fix fl {} icefluid model {} treatment {} cd {:.9g} drag_law {} nu {:.9g} ca {} water_level {:.9g} "
       "water_density {:.9g} g {:.9g}\n",
-      to_string(c.fluid.model), to_string(c.fluid.treatment), c.fluid.drag_coefficient, to_string(c.fluid.drag_law),
+      moving, to_string(c.fluid.model), to_string(c.fluid.treatment), c.fluid.drag_coefficient, to_string(c.fluid.drag_law),
       c.water.kinematic_viscosity_m2_s, to_string(c.fluid.ca_table), c.water.level_m, c.water.density_kg_m3,
       c.water.gravity_m_s2);
   s += fmt::format("variable t equal step*dt\n");
-  s += fmt::format("fix hf all ave/time {0} 1 {0} v_t f_hull[1] f_hull[2] f_hull[3] file hull_force.raw\n", out_every);
+  if (sp.symmetry_y) {  // the whole ship: twice the half hull's fx, fz; fy = 0 by symmetry
+    s += "variable hfx equal 2*f_hull[1]\nvariable hfy equal 0\nvariable hfz equal 2*f_hull[3]\n";
+    s += fmt::format("fix hf all ave/time {0} 1 {0} v_t v_hfx v_hfy v_hfz file hull_force.raw\n", out_every);
+  } else {
+    s += fmt::format("fix hf all ave/time {0} 1 {0} v_t f_hull[1] f_hull[2] f_hull[3] file hull_force.raw\n",
+                     out_every);
+  }
   s += fmt::format(
       "dump parts all custom {} particles/dump.*.txt id x y z radius vx vy vz f_fl[1] f_fl[2] f_fl[3] f_fl[4]\n",
       dump_every);

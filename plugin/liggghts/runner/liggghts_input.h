@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "brash/case.hpp"
+#include "brash/hull/mesh.hpp"
 #include "brash/packing.hpp"
 
 namespace brash::liggghts {
@@ -15,6 +16,8 @@ struct SceneOptions {
   long restart_every_steps = 0; // 0 = no periodic restart files
   int ranks = 1;
   std::string hull_file = "hull.stl";  // inside the run dir, in the STL's own frame (keel at z=0)
+  double hull_x_min_m = 0;      // x extent of the hull in the STL frame (stern, bow) for speedups.farfield
+  double hull_x_max_m = 0;
 };
 
 struct Box {
@@ -25,8 +28,16 @@ struct Box {
 Box scene_box(const Case& c, double hull_x_min_m, double hull_x_max_m, double hull_z_min_m, double hull_z_max_m,
               double duration_s);
 
-// "read_data" file: atom_style granular lines "id type diameter density x y z".
-std::string data_file(const std::vector<Sphere>& spheres, const Box& box, double ice_density_kg_m3);
+// "read_data" file: atom_style granular lines "id type diameter density x y z". Material types: 1 ice,
+// 2 hull, 3 channel walls, 4 symmetry plane (speedups.symmetry_y only).
+std::string data_file(const std::vector<Sphere>& spheres, const Box& box, double ice_density_kg_m3,
+                      int atom_types = 3);
+
+// speedups.symmetry_y: the half y >= 0. Spheres whose centre is closer than their radius to y = 0 are dropped
+// (a piece cannot straddle a symmetry plane), and the hull is clipped to y >= 0 (triangles crossing the plane
+// are cut there; the result is an open mesh, which LIGGGHTS accepts).
+std::vector<Sphere> half_channel_spheres(const std::vector<Sphere>& spheres);
+hull::Mesh half_hull(const hull::Mesh& mesh);
 
 // The input script; outputs (relative to the run dir): hull_force.raw, particles/dump.*.txt, restart/.
 std::string input_script(const Case& c, const Box& box, const SceneOptions& opt);

@@ -210,7 +210,8 @@ int main(int argc, char** argv) {
       throw InputError(fmt::format("{}: hull.file {} not found (searched the case folder, $BRASH_HULL_DIR, "
                                    "<build>/hull_meshes, <repo>/hull_meshes); build it with `make build`",
                                    case_file.string(), c.hull.file.string()));
-    const auto spheres = brash::read_packing_csv(c.ice.packing_file);
+    auto spheres = brash::read_packing_csv(c.ice.packing_file);
+    if (c.speedups.symmetry_y) spheres = brash::liggghts::half_channel_spheres(spheres);
     auto mesh = brash::hull::read_mesh(c.hull.file);
     brash::hull::require_plausible_units(mesh, c.hull.file, c.hull.draft_m, c.hull.lpp_m);
     double xmin = 1e300, xmax = -1e300, zmin = 1e300, zmax = -1e300;
@@ -219,6 +220,7 @@ int main(int argc, char** argv) {
       zmin = std::min(zmin, v.z()), zmax = std::max(zmax, v.z());
     }
     if (c.hull.band_m) mesh = brash::hull::clip_band(mesh, c.hull.draft_m - (*c.hull.band_m)[0], c.hull.draft_m + (*c.hull.band_m)[1]);
+    if (c.speedups.symmetry_y) mesh = brash::liggghts::half_hull(mesh);
 
     run_dir = out_dir.empty() ? brash::run::make_run_dir(runs_root, c.name, "liggghts", std::string(to_string(c.fluid.model)))
                               : out_dir;
@@ -227,10 +229,13 @@ int main(int argc, char** argv) {
     brash::run::write_atomic(run_dir / "case.yaml", brash::dump_case_yaml(c));
     brash::hull::write_stl(run_dir / "hull.stl", mesh);
     const auto box = brash::liggghts::scene_box(c, xmin, xmax, zmin, zmax, run_duration);
-    brash::run::write_atomic(run_dir / "packing.data", brash::liggghts::data_file(spheres, box, c.ice.density_kg_m3));
+    brash::run::write_atomic(run_dir / "packing.data", brash::liggghts::data_file(spheres, box, c.ice.density_kg_m3,
+                                                                                 c.speedups.symmetry_y ? 4 : 3));
     brash::liggghts::SceneOptions opt;
     opt.duration_s = run_duration;
     opt.ranks = ranks;
+    opt.hull_x_min_m = xmin;
+    opt.hull_x_max_m = xmax;
     opt.restart_every_steps = std::max(1L, std::lround(run_duration / 10 / c.run.timestep_s));
     brash::run::write_atomic(run_dir / "in.lmp", brash::liggghts::input_script(c, box, opt));
 
