@@ -164,6 +164,11 @@ def main(scene_file):
     if dt > pwave:
         raise RuntimeError("dt %.3g s exceeds YADE's P-wave time step %.3g s" % (dt, pwave))
 
+    bench_steps = int(os.environ.get("BRASH_YADE_BENCH_STEPS", "0"))
+    if bench_steps > 0:
+        bench(fluid, bench_steps, s["water"]["gravity_m_s2"])
+        return
+
     O.timingEnabled = True
     chunk = max(1, min(steps // 200, int(round(0.01 / dt))))
     t_start = time.time()
@@ -195,6 +200,41 @@ def main(scene_file):
     write_atomic(os.path.join(run_dir, "yade_summary.json"), json.dumps(summary, indent=1))
     log("done: %d steps in %.1f s, %.3g particle-steps/s; fluid adapter %.3g us per particle-step"
         % (total, wall_s, len(ice_ids) * total / wall_s, summary["fluid_us_per_particle_step"]))
+
+
+def bench(fluid, n, g):
+    """Particle-steps/s of this scene with and without the fluid adapter (paired windows of n steps,
+    3 repetitions, same process). 'without': the fluid PyRunner is dead and NewtonIntegrator applies
+    gravity (bare YADE DEM step: collider, Hertz-Mindlin contacts, hull facets, walls, Newton)."""
+    newton = [e for e in O.engines if e.label == "newton"][0]
+    runner = [e for e in O.engines if e.label == "brashFluid"][0]
+    others = [e for e in O.engines if e.label in ("hullForce", "dump")]
+    for e in others:
+        e.dead = True
+    O.run(20, True)  # warm-up: first collider run, allocations
+    O.timingEnabled = True
+    npart = len(fluid.ids)
+    rates = {"with": [], "without": []}
+    fluid_ns = 0
+    fluid_calls = 0
+    for rep in range(3):
+        for mode in ("with", "without"):
+            runner.dead = mode == "without"
+            newton.gravity = (0, 0, 0) if mode == "with" else (0, 0, -g)
+            t0_exec, c0 = runner.execTime, runner.execCount
+            t0 = time.time()
+            O.run(n, True)
+            rates[mode].append(npart * n / (time.time() - t0))
+            fluid_ns += runner.execTime - t0_exec
+            fluid_calls += runner.execCount - c0
+    best = {k: max(v) for k, v in rates.items()}
+    us = 1e-3 * fluid_ns / max(1, fluid_calls * npart)
+    print("BENCH spheres %d steps_per_window %d" % (npart, n))
+    for mode in ("without", "with"):
+        print("BENCH %-7s adapter: particle-steps/s best %.4g, all %s"
+              % (mode, best[mode], " ".join("%.4g" % r for r in rates[mode])))
+    print("BENCH adapter cost (YADE engine timer): %.3f us per particle-step; bare step %.3f us per particle-step;"
+          " slowdown x%.2f" % (us, 1e6 / best["without"], best["without"] / best["with"]), flush=True)
 
 
 try:
