@@ -31,9 +31,9 @@ for v in without with; do
   valgrind --tool=callgrind --callgrind-out-file="cg_$v.out" --toggle-collect='LAMMPS_NS::Verlet::run(int)' \
     "$bin/brash-liggghts" -in "in_$v.lmp" -log none >/dev/null 2>&1
 done
-ir() { callgrind_annotate "$1" 2>/dev/null | awk '/PROGRAM TOTALS/{gsub(",","",$1); print $1; exit}'; }
+ir() { callgrind_annotate "$1" 2>/dev/null | awk '/PROGRAM TOTALS/ && !n++ {gsub(",","",$1); print $1}'; }
 ir_without=$(ir cg_without.out); ir_with=$(ir cg_with.out)
-ir_fix=$(callgrind_annotate --inclusive=yes "cg_with.out" 2>/dev/null | awk '/FixIceFluid::post_force/{gsub(",","",$1); print $1; exit}')
+ir_fix=$(callgrind_annotate --inclusive=yes "cg_with.out" 2>/dev/null | awk '/FixIceFluid::post_force/ && !n++ {gsub(",","",$1); print $1}')
 awk -v a="$ir_without" -v b="$ir_with" -v f="${ir_fix:-0}" -v n="$atoms" -v s="$steps_cg" 'BEGIN{
   printf "instructions bare        %.4g\n", a;
   printf "instructions with fix    %.4g\n", b;
@@ -43,7 +43,7 @@ awk -v a="$ir_without" -v b="$ir_with" -v f="${ir_fix:-0}" -v n="$atoms" -v s="$
 
 echo "== throughput ($steps_tp steps)"
 mk_input "$steps_tp" with > in_tp.lmp
-loop() { awk '/^Loop time of/{print $4; exit}' "$1"; }
+loop() { awk '/^Loop time of/ && !n++ {print $4}' "$1"; }
 "$bin/brash-liggghts" -in in_tp.lmp -log none > tp1.txt 2>&1
 mpirun --allow-run-as-root --oversubscribe -np 2 "$bin/brash-liggghts" -in in_tp.lmp -log none > tp2.txt 2>&1
 t1=$(loop tp1.txt); t2=$(loop tp2.txt)

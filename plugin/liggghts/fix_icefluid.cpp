@@ -40,7 +40,7 @@ FixIceFluid::FixIceFluid(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg
 
   peratom_flag = 1;
   size_peratom_cols = kOutputSize;
-  peratom_freq = 1;
+  peratom_freq = output_every_;  // LIGGGHTS checks that dumps ask for it at multiples of this
   restart_peratom = 1;
   create_attribute = 1;
 
@@ -93,6 +93,11 @@ void FixIceFluid::parse(int narg, char** arg) {
         need(3), params_.flow_velocity_m_s = core::Vec3(num(1), num(2), num(3)), iarg += 4;
       } else if (key == "g") {
         need(1), params_.gravity_m_s2 = num(1), iarg += 2;
+      } else if (key == "output_every") {
+        need(1);
+        const double n = num(1);
+        if (!(n >= 1) || n != static_cast<int>(n)) error->all(FLERR, "fix icefluid: output_every must be an integer >= 1");
+        output_every_ = static_cast<int>(n), iarg += 2;
       } else if (key == "gravity") {
         need(1);
         const std::string v = arg[iarg + 1];
@@ -101,7 +106,7 @@ void FixIceFluid::parse(int narg, char** arg) {
       } else {
         const std::string msg = "fix icefluid: unknown keyword '" + key +
                                 "' (expected model, treatment, cd, drag_law, nu, ca, water_level, "
-                                "water_density, flow, g, gravity)";
+                                "water_density, flow, g, gravity, output_every)";
         error->all(FLERR, msg.c_str());
       }
     }
@@ -148,7 +153,7 @@ void FixIceFluid::compute(bool replay) {
   a.v_m_s = atom->v[0];
   a.f_N = atom->f[0];
   a.state = state_[0];
-  a.output = output_[0];
+  a.output = update->ntimestep % output_every_ == 0 ? output_[0] : nullptr;
   a.mask = atom->mask;
   a.groupbit = groupbit;
   core::apply_kernel(params_, a, update->dt, replay);

@@ -14,6 +14,7 @@
      flow         vx vy vz, flow velocity (m/s)            [0 0 0]
      g            gravity magnitude for buoyancy (m/s^2)   [9.81]
      gravity      no | yes: also apply -m g here (then do not use fix gravity)  [no]
+     output_every N: fill the per-atom output only every N steps (dump interval)  [1]
 
    Must be the last POST_FORCE fix (checked at init): the implicit treatment scales the sum of every
    other force. Per-atom output (dump f_ID[1..4]): submerged fraction, Ca_x, Ca_y, Ca_z.
@@ -60,6 +61,7 @@ class FixIceFluid : public LAMMPS_NS::Fix {
   void parse(int narg, char** arg);
 
   brash::core::FluidParams params_;
+  int output_every_ = 1;  // per-atom output is only needed on dump steps
   double** state_ = nullptr;
   double** output_ = nullptr;
 };
