@@ -15,6 +15,7 @@ struct SceneOptions {
   double duration_s = 0;        // simulated time of this run
   long restart_every_steps = 0; // 0 = no periodic restart files
   int ranks = 1;
+  std::string restart_file;      // resume from this restart (relative to the run dir) instead of packing.data
   std::string hull_file = "hull.stl";  // inside the run dir, in the STL's own frame (keel at z=0)
   double hull_x_min_m = 0;      // x extent of the hull in the STL frame (stern, bow) for speedups.farfield
   double hull_x_max_m = 0;

@@ -33,21 +33,58 @@ int run_command(const std::string& cmd) {
 
 std::string quote(const fs::path& p) { return "'" + p.string() + "'"; }
 
-// hull_force.raw (fix ave/time: "step t fx fy fz") -> hull_force.csv "t_s,fx_N,fy_N,fz_N".
-std::size_t convert_hull_force(const fs::path& raw, const fs::path& csv) {
-  std::ifstream in(raw);
-  std::string line, out = "t_s,fx_N,fy_N,fz_N\n";
-  std::size_t n = 0;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream ss(line);
-    double step, t, fx, fy, fz;
-    if (!(ss >> step >> t >> fx >> fy >> fz)) continue;  // a truncated last line of a killed run
-    out += fmt::format("{:.9g},{:.9g},{:.9g},{:.9g}\n", t, fx, fy, fz);
-    ++n;
+// hull_force*.raw (fix ave/time: "step t fx fy fz") -> hull_force.csv "t_s,fx_N,fy_N,fz_N". The raw
+// files of a resumed run are read in order; a later file's row for a step replaces an earlier one.
+std::size_t convert_hull_force(const std::vector<fs::path>& raws, const fs::path& csv) {
+  std::map<long, std::string> rows;
+  for (const auto& raw : raws) {
+    std::ifstream in(raw);
+    std::string line;
+    long first_step = -1;
+    while (std::getline(in, line)) {
+      if (line.empty() || line[0] == '#') continue;
+      std::istringstream ss(line);
+      long step;
+      double t, fx, fy, fz;
+      if (!(ss >> step >> t >> fx >> fy >> fz)) continue;  // a truncated last line of a killed run
+      if (first_step < 0) first_step = step;
+      // A resumed run's first row is its set-up (no contact force summed yet): keep the earlier value.
+      if (step == first_step && rows.count(step)) continue;
+      rows[step] = fmt::format("{:.9g},{:.9g},{:.9g},{:.9g}\n", t, fx, fy, fz);
+    }
   }
+  std::string out = "t_s,fx_N,fy_N,fz_N\n";
+  for (const auto& [step, row] : rows) out += row;
   brash::run::write_atomic(csv, out);
-  return n;
+  return rows.size();
+}
+
+std::pair<double, double> bbox_y(const brash::hull::Mesh& mesh) {
+  double lo = 1e300, hi = -1e300;
+  for (const auto& v : mesh.vertices) lo = std::min(lo, v.y()), hi = std::max(hi, v.y());
+  return {lo, hi};
+}
+
+// Raw hull-force files of earlier (killed) attempts, oldest first, then the current one.
+std::vector<fs::path> hull_force_raws(const fs::path& run_dir) {
+  std::vector<fs::path> parts;
+  for (int k = 1; fs::exists(run_dir / fmt::format("hull_force.part{}.raw", k)); ++k)
+    parts.push_back(run_dir / fmt::format("hull_force.part{}.raw", k));
+  if (fs::exists(run_dir / "hull_force.raw")) parts.push_back(run_dir / "hull_force.raw");
+  return parts;
+}
+
+// Periodic restart files of a run, newest first (LIGGGHTS alternates between a and b; a kill while
+// one is written leaves the other intact).
+std::vector<std::string> restart_candidates(const fs::path& run_dir) {
+  std::vector<std::pair<fs::file_time_type, std::string>> found;
+  for (const char* name : {"restart/a.restart", "restart/b.restart"})
+    if (fs::exists(run_dir / name) && fs::file_size(run_dir / name) > 0)
+      found.emplace_back(fs::last_write_time(run_dir / name), name);
+  std::sort(found.begin(), found.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+  std::vector<std::string> out;
+  for (const auto& f : found) out.push_back(f.second);
+  return out;
 }
 
 // LIGGGHTS custom dumps -> particles/particles_<step>.csv (sorted by id) + particles/index.csv.
@@ -109,17 +146,17 @@ struct EngineResult {
 };
 
 // Runs the engine, copies its screen output to log.txt and prints progress with an ETA.
-EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s) {
+EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, const std::string& input = "in.lmp") {
   std::string cmd = "cd " + quote(run_dir) + " && ";
   if (ranks > 1) cmd += fmt::format("mpirun --allow-run-as-root --oversubscribe -np {} ", ranks);
-  cmd += quote(bin_dir() / "brash-liggghts") + " -in in.lmp -log none 2>&1";
+  cmd += quote(bin_dir() / "brash-liggghts") + " -in " + input + " -log none 2>&1";
   EngineResult res;
-  std::ofstream log(run_dir / "log.txt");
+  std::ofstream log(run_dir / "log.txt", std::ios::app);
   FILE* pipe = ::popen(cmd.c_str(), "r");
   if (!pipe) throw std::runtime_error("cannot start " + cmd);
   const auto start = std::chrono::steady_clock::now();
   char buf[4096];
-  double last_print = -1;
+  double last_print = -1, t_first = -1;
   bool in_thermo = false;
   while (std::fgets(buf, sizeof buf, pipe)) {
     const std::string line = buf;
@@ -136,9 +173,10 @@ EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s) {
     double t;
     if (std::sscanf(line.c_str(), " %ld %lf", &step, &t) == 2) {
       const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      if (elapsed - last_print >= 2.0 && t > 0) {
+      if (t_first < 0) t_first = t;  // a resumed run starts at its restart time
+      if (elapsed - last_print >= 2.0 && t > t_first) {
         last_print = elapsed;
-        const double eta = elapsed * (duration_s - t) / t;
+        const double eta = elapsed * (duration_s - t) / (t - t_first);
         std::fprintf(stderr, "\r[brash-liggghts] t = %.2f / %.2f s (%3.0f%%)  elapsed %.0f s  ETA %.0f s   ", t,
                      duration_s, 100 * t / duration_s, elapsed, eta);
       }
@@ -159,7 +197,11 @@ int main(int argc, char** argv) {
   double duration = -1;
   std::string model, treatment;
   bool no_post = false, prepare_only = false;
-  app.add_option("case_dir", case_dir, "case folder holding case.yaml")->required();
+  fs::path resume_dir;
+  auto* case_opt = app.add_option("case_dir", case_dir, "case folder holding case.yaml");
+  auto* resume_opt = app.add_option("--resume", resume_dir,
+                                    "continue an interrupted run directory from its newest restart file");
+  case_opt->excludes(resume_opt);
   app.add_option("--np", ranks, "MPI ranks")->check(CLI::Range(1, 1024));
   app.add_option("--out", out_dir, "run directory (default: runs/<case>-liggghts-<model>-<stamp>)");
   app.add_option("--runs-root", runs_root, "where run directories are created");
@@ -169,11 +211,25 @@ int main(int argc, char** argv) {
   app.add_flag("--no-post", no_post, "do not run brash-post afterwards");
   app.add_flag("--prepare-only", prepare_only, "write the run directory's inputs (in.lmp, packing.data, hull.stl) and stop");
   CLI11_PARSE(app, argc, argv);
+  if (case_dir.empty() && resume_dir.empty()) {
+    std::cerr << "brash-liggghts-run: error: give a case directory, or --resume RUN_DIR\n";
+    return 2;
+  }
+  const bool resume = !resume_dir.empty();
+  if (resume && (!model.empty() || !treatment.empty() || duration > 0 || !out_dir.empty())) {
+    std::cerr << "brash-liggghts-run: error: --resume continues a run as it was set up; it takes no "
+                 "--model/--treatment/--duration/--out\n";
+    return 2;
+  }
 
   fs::path run_dir;
   nlohmann::json meta;
   try {
-    const fs::path case_file = fs::is_directory(case_dir) ? case_dir / "case.yaml" : case_dir;
+    const fs::path case_file = resume                        ? resume_dir / "case.yaml"
+                               : fs::is_directory(case_dir) ? case_dir / "case.yaml"
+                                                            : case_dir;
+    if (resume && !fs::exists(case_file))
+      throw InputError(resume_dir.string() + ": not a run directory (no case.yaml)");
     const fs::path case_root = case_file.parent_path();
     // Overrides go through the YAML text so they are validated like any case key.
     brash::Case c = brash::load_case(case_file);
@@ -219,25 +275,43 @@ int main(int argc, char** argv) {
       xmin = std::min(xmin, v.x()), xmax = std::max(xmax, v.x());
       zmin = std::min(zmin, v.z()), zmax = std::max(zmax, v.z());
     }
+    const double hull_half_beam = std::max(std::abs(bbox_y(mesh).first), std::abs(bbox_y(mesh).second));
+    if (2 * hull_half_beam >= c.channel.width_m)
+      throw InputError(fmt::format("{}: channel.width_m = {} m is not wider than the hull ({} m across in {}): the "
+                                   "channel walls would cut the hull",
+                                   case_file.string(), c.channel.width_m, 2 * hull_half_beam, c.hull.file.string()));
     if (c.hull.band_m) mesh = brash::hull::clip_band(mesh, c.hull.draft_m - (*c.hull.band_m)[0], c.hull.draft_m + (*c.hull.band_m)[1]);
     if (c.speedups.symmetry_y) mesh = brash::liggghts::half_hull(mesh);
 
-    run_dir = out_dir.empty() ? brash::run::make_run_dir(runs_root, c.name, "liggghts", std::string(to_string(c.fluid.model)))
-                              : out_dir;
-    fs::create_directories(run_dir / "particles");
-    fs::create_directories(run_dir / "restart");
-    brash::run::write_atomic(run_dir / "case.yaml", brash::dump_case_yaml(c));
-    brash::hull::write_stl(run_dir / "hull.stl", mesh);
     const auto box = brash::liggghts::scene_box(c, xmin, xmax, zmin, zmax, run_duration);
-    brash::run::write_atomic(run_dir / "packing.data", brash::liggghts::data_file(spheres, box, c.ice.density_kg_m3,
-                                                                                 c.speedups.symmetry_y ? 4 : 3));
+    std::vector<std::string> restarts;
+    if (resume) {
+      run_dir = resume_dir;
+      const auto old_meta = nlohmann::json::parse(std::ifstream(run_dir / "meta.json"), nullptr, false);
+      if (!old_meta.is_discarded() && old_meta.value("status", "") == "complete")
+        throw InputError(run_dir.string() + ": the run is complete; nothing to resume");
+      restarts = restart_candidates(run_dir);
+      if (restarts.empty())
+        throw InputError(run_dir.string() + ": no restart file (restart/a.restart, restart/b.restart) to resume from");
+    } else {
+      run_dir = out_dir.empty() ? brash::run::make_run_dir(runs_root, c.name, "liggghts",
+                                                           std::string(to_string(c.fluid.model)))
+                                : out_dir;
+      fs::create_directories(run_dir / "particles");
+      fs::create_directories(run_dir / "restart");
+      brash::run::write_atomic(run_dir / "case.yaml", brash::dump_case_yaml(c));
+      brash::hull::write_stl(run_dir / "hull.stl", mesh);
+      brash::run::write_atomic(run_dir / "packing.data",
+                               brash::liggghts::data_file(spheres, box, c.ice.density_kg_m3,
+                                                          c.speedups.symmetry_y ? 4 : 3));
+    }
     brash::liggghts::SceneOptions opt;
     opt.duration_s = run_duration;
     opt.ranks = ranks;
     opt.hull_x_min_m = xmin;
     opt.hull_x_max_m = xmax;
     opt.restart_every_steps = std::max(1L, std::lround(run_duration / 10 / c.run.timestep_s));
-    brash::run::write_atomic(run_dir / "in.lmp", brash::liggghts::input_script(c, box, opt));
+    if (!resume) brash::run::write_atomic(run_dir / "in.lmp", brash::liggghts::input_script(c, box, opt));
 
     if (prepare_only) {
       std::cout << run_dir.string() << "\n";
@@ -260,9 +334,26 @@ int main(int argc, char** argv) {
               << ranks << " rank(s) -> " << run_dir.string() << "\n";
 
     const auto t0 = std::chrono::steady_clock::now();
-    const auto res = run_engine(run_dir, ranks, run_duration);
+    EngineResult res;
+    if (!resume) {
+      res = run_engine(run_dir, ranks, run_duration);
+    } else {
+      // Keep what the killed attempt wrote; the resumed run re-emits rows from its restart step on.
+      if (fs::exists(run_dir / "hull_force.raw"))
+        fs::rename(run_dir / "hull_force.raw", run_dir / fmt::format("hull_force.part{}.raw", hull_force_raws(run_dir).size()));
+      for (const auto& restart : restarts) {
+        opt.restart_file = restart;
+        brash::run::write_atomic(run_dir / "in_resume.lmp", brash::liggghts::input_script(c, box, opt));
+        std::cerr << "[brash-liggghts] resuming " << run_dir.string() << " from " << restart << "\n";
+        meta["resumed_from"] = restart;
+        res = run_engine(run_dir, ranks, run_duration, "in_resume.lmp");
+        if (res.exit_code == 0 && res.error.empty()) break;
+        std::cerr << "[brash-liggghts] resume from " << restart << " failed: " << res.error << "\n";
+      }
+    }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const auto rows = fs::exists(run_dir / "hull_force.raw") ? convert_hull_force(run_dir / "hull_force.raw", run_dir / "hull_force.csv") : 0;
+    const auto raws = hull_force_raws(run_dir);
+    const auto rows = raws.empty() ? 0 : convert_hull_force(raws, run_dir / "hull_force.csv");
     convert_dumps(run_dir, c);
     meta["wall_time_s"] = wall;
     meta["loop_time_s"] = res.loop_time_s;
