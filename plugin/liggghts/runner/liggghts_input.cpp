@@ -14,7 +14,10 @@ Box scene_box(const Case& c, double hull_x_min_m, double hull_x_max_m, double hu
   const double d = c.ice.diameter_mean_m;
   Box b;
   b.xlo = std::min(0.0, c.hull.start_x_m + hull_x_min_m) - 10 * d;
-  b.xhi = std::max(c.channel.length_m, c.hull.start_x_m + hull_x_max_m + travel) + 10 * d;
+  // Ice pushed ahead of the bow leaves the channel end into open water: leave room for it
+  // (an atom leaving the box would be lost; thermo_modify lost error and fix brash/guard stop the run).
+  const double open_water = std::max(0.5, 0.1 * c.channel.length_m);
+  b.xhi = std::max(c.channel.length_m + open_water, c.hull.start_x_m + hull_x_max_m + travel) + 10 * d;
   b.ylo = c.speedups.symmetry_y ? -2 * d : -0.5 * c.channel.width_m - 2 * d;
   b.yhi = 0.5 * c.channel.width_m + 2 * d;
   b.zlo = std::min(hull_z_min_m - c.hull.draft_m, -6 * c.ice.thickness_m) - 2 * d;
@@ -84,7 +87,7 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
   s += "atom_style granular\natom_modify map array sort 0 0.0\nboundary f f f\nnewton off\n";
   s += "communicate single vel yes\nunits si\n";
   s += opt.ranks > 1 ? "processors 1 * 1\n" : "";
-  s += "read_data packing.data\n";
+  s += opt.restart_file.empty() ? std::string("read_data packing.data\n") : "read_restart " + opt.restart_file + "\n";
   // speedups (docs/performance.md): idle far-field ice lives in group `idle`, the rest in `active`
   const auto& sp = c.speedups;
   const std::string moving = sp.farfield ? "active" : "all";
@@ -149,10 +152,10 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
   // fluid forces last: implicit added mass scales the sum of all other forces
   s += fmt::format(
       "fix fl {} icefluid model {} treatment {} cd {:.9g} drag_law {} nu {:.9g} ca {} water_level {:.9g} "
-      "water_density {:.9g} g {:.9g}\n",
+      "water_density {:.9g} g {:.9g} output_every {}\n",
       moving, to_string(c.fluid.model), to_string(c.fluid.treatment), c.fluid.drag_coefficient, to_string(c.fluid.drag_law),
       c.water.kinematic_viscosity_m2_s, to_string(c.fluid.ca_table), c.water.level_m, c.water.density_kg_m3,
-      c.water.gravity_m_s2);
+      c.water.gravity_m_s2, dump_every);
   s += fmt::format("variable t equal step*dt\n");
   if (sp.symmetry_y) {  // the whole ship: twice the half hull's fx, fz; fy = 0 by symmetry
     s += "variable hfx equal 2*f_hull[1]\nvariable hfy equal 0\nvariable hfz equal 2*f_hull[3]\n";
@@ -167,9 +170,9 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
   s += "dump_modify parts pad 10\n";
   if (opt.restart_every_steps > 0)
     s += fmt::format("restart {} restart/a.restart restart/b.restart\n", opt.restart_every_steps);
-  s += fmt::format("thermo_style custom step v_t atoms ke f_hull[1] cpu\nthermo {}\nthermo_modify norm no\n",
+  s += fmt::format("thermo_style custom step v_t atoms ke f_hull[1] cpu\nthermo {}\nthermo_modify norm no lost error\n",
                    thermo_every);
-  s += fmt::format("run {}\n", steps);
+  s += fmt::format("run {}{}\n", steps, opt.restart_file.empty() ? "" : " upto");  // upto: to the same end step
   s += "write_restart restart/final.restart\n";
   return s;
 }
