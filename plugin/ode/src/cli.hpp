@@ -36,6 +36,10 @@ inline void add_run_options(CLI::App& app, RunOptions& o, std::string& implicit_
   app.add_option("--settle", o.settle_s, "settle the bed this long [s] with the hull parked before t = 0")
       ->capture_default_str();
   app.add_flag("!--no-progress", o.progress, "no progress line on stderr");
+  app.add_option("--restart-every", o.restart_every_s, "simulated time between restart files in RUN_DIR/restart [s] (0 = none)")
+      ->capture_default_str();
+  // Testing only: exit like a kill -9 (no cleanup, no final outputs) right after this step.
+  app.add_option("--crash-after-step", o.crash_after_step)->group("");
 }
 
 inline ImplicitMode parse_implicit_mode(const std::string& s) {

@@ -1,5 +1,6 @@
 // brash-ode: the standalone ODE simulator.
 //   brash-ode CASE_DIR [--out RUN_DIR] [--duration S] [...]   run a case into the common run layout
+//   brash-ode --resume RUN_DIR                               continue a killed run from its restart files
 //   brash-ode --single rise|float|heave|all [--dt S]         single-sphere scenes vs the reference integrator
 #include <fmt/format.h>
 
@@ -16,6 +17,10 @@ int main(int argc, char** argv) {
   app.add_option("case_dir", o.case_dir, "case folder holding case.yaml");
   app.add_option("--single", scene, "single-sphere scene vs reference: rise | float | heave | all")
       ->check(CLI::IsMember({"rise", "float", "heave", "all"}));
+  std::filesystem::path resume_dir;
+  app.add_option("--resume", resume_dir,
+                 "continue the killed run in RUN_DIR from its newest intact restart file (all other run options "
+                 "come from RUN_DIR/meta.json)");
   brash::ode::add_run_options(app, o, implicit_mode);
   CLI11_PARSE(app, argc, argv);
   o.implicit_mode = brash::ode::parse_implicit_mode(implicit_mode);
@@ -30,6 +35,13 @@ int main(int argc, char** argv) {
       if (scene == "rise" || scene == "all") fmt::print("{}\n", single::report(single::rise(so)));
       if (scene == "float" || scene == "all") fmt::print("{}\n", single::report(single::floating(so)));
       if (scene == "heave" || scene == "all") fmt::print("{}\n", single::report(single::heave(so)));
+      return 0;
+    }
+    if (!resume_dir.empty()) {
+      o.out_dir = resume_dir;
+      o.resume = true;
+      const auto r = brash::ode::run_case(o);
+      std::cout << r.run_dir.string() << "\n";
       return 0;
     }
     if (o.case_dir.empty()) {

@@ -16,6 +16,7 @@
 #include "brash/case.hpp"
 #include "brash/error.hpp"
 #include "brash/hull/mesh.hpp"
+#include "brash/ode/restart.hpp"
 #include "brash/packing.hpp"
 #include "brash/run_layout.hpp"
 
@@ -128,9 +129,99 @@ std::string hms(double s) {
   return t >= 3600 ? fmt::format("{}:{:02}:{:02}", t / 3600, (t / 60) % 60, t % 60) : fmt::format("{}:{:02}", t / 60, t % 60);
 }
 
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// Every option that shapes the run, stored in meta.json so that --resume rebuilds the same scene.
+nlohmann::json options_json(const RunOptions& o) {
+  const auto& st = o.stepper;
+  const auto& k = o.skips;
+  return {{"case_dir", fs::absolute(o.case_dir).lexically_normal().string()},
+          {"duration_s", o.duration_s},
+          {"model", o.model},
+          {"treatment", o.treatment},
+          {"dt_s", st.dt_s},
+          {"iterations", st.iterations},
+          {"erp", st.erp},
+          {"cfm", st.cfm},
+          {"contact_surface_layer_m", st.contact_surface_layer},
+          {"max_contacts_per_pair", st.max_contacts_per_pair},
+          {"angular_damping", st.angular_damping},
+          {"auto_disable", k.auto_disable},
+          {"disable_linear_m_s", k.disable_linear_m_s},
+          {"disable_angular_rad_s", k.disable_angular_rad_s},
+          {"disable_steps", k.disable_steps},
+          {"auto_disable_far_only", k.auto_disable_far_only},
+          {"cull", k.cull},
+          {"cull_ahead_m", k.cull_ahead_m},
+          {"cull_behind_m", k.cull_behind_m},
+          {"cull_side_m", k.cull_side_m},
+          {"cull_every", k.cull_every},
+          {"implicit", o.implicit_mode == ImplicitMode::EffectiveMass ? "effective_mass" : "scale_forces"},
+          {"end_walls", o.end_walls},
+          {"settle_s", o.settle_s},
+          {"overlap_tolerance_over_d", o.overlap_tolerance_over_d},
+          {"restart_every_s", o.restart_every_s}};
+}
+
+RunOptions options_from_meta(const fs::path& run_dir, const RunOptions& cli) {
+  const fs::path mf = run_dir / "meta.json";
+  if (!fs::exists(mf)) throw InputError(fmt::format("--resume {}: no meta.json there (not a run directory?)", run_dir.string()));
+  nlohmann::json meta;
+  try {
+    meta = nlohmann::json::parse(read_text(mf));
+  } catch (const std::exception& e) {
+    throw InputError(fmt::format("{}: unreadable: {}", mf.string(), e.what()));
+  }
+  if (meta.value("engine", "") != "ode" || !meta.contains("ode_options"))
+    throw InputError(fmt::format("{}: not a brash-ode run with restart support (no \"ode_options\")", mf.string()));
+  const auto& j = meta["ode_options"];
+  RunOptions o;
+  try {
+    o.case_dir = j.at("case_dir").get<std::string>();
+    o.duration_s = j.at("duration_s");
+    o.model = j.at("model");
+    o.treatment = j.at("treatment");
+    o.stepper.dt_s = j.at("dt_s");
+    o.stepper.iterations = j.at("iterations");
+    o.stepper.erp = j.at("erp");
+    o.stepper.cfm = j.at("cfm");
+    o.stepper.contact_surface_layer = j.at("contact_surface_layer_m");
+    o.stepper.max_contacts_per_pair = j.at("max_contacts_per_pair");
+    o.stepper.angular_damping = j.at("angular_damping");
+    o.skips.auto_disable = j.at("auto_disable");
+    o.skips.disable_linear_m_s = j.at("disable_linear_m_s");
+    o.skips.disable_angular_rad_s = j.at("disable_angular_rad_s");
+    o.skips.disable_steps = j.at("disable_steps");
+    o.skips.auto_disable_far_only = j.at("auto_disable_far_only");
+    o.skips.cull = j.at("cull");
+    o.skips.cull_ahead_m = j.at("cull_ahead_m");
+    o.skips.cull_behind_m = j.at("cull_behind_m");
+    o.skips.cull_side_m = j.at("cull_side_m");
+    o.skips.cull_every = j.at("cull_every");
+    o.implicit_mode = j.at("implicit") == "scale_forces" ? ImplicitMode::ScaleForces : ImplicitMode::EffectiveMass;
+    o.end_walls = j.at("end_walls");
+    o.settle_s = j.at("settle_s");
+    o.overlap_tolerance_over_d = j.at("overlap_tolerance_over_d");
+    o.restart_every_s = j.at("restart_every_s");
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(fmt::format("{}: ode_options: {}", mf.string(), e.what()));
+  }
+  o.out_dir = run_dir;
+  o.resume = true;
+  o.progress = cli.progress;
+  o.crash_after_step = cli.crash_after_step;
+  return o;
+}
+
 }  // namespace
 
-RunResult run_case(const RunOptions& o) {
+RunResult run_case(const RunOptions& cli_options) {
+  const RunOptions o = cli_options.resume ? options_from_meta(cli_options.out_dir, cli_options) : cli_options;
   using clock = std::chrono::steady_clock;
   const auto t_start = clock::now();
   const fs::path case_file = fs::is_directory(o.case_dir) ? o.case_dir / "case.yaml" : o.case_dir;
@@ -183,8 +274,8 @@ RunResult run_case(const RunOptions& o) {
       o.out_dir.empty() ? run::make_run_dir(o.runs_root, c.name, "ode", std::string(to_string(c.fluid.model))) : o.out_dir;
   fs::create_directories(run_dir / "particles");
   fs::create_directories(run_dir / "restart");
-  run::write_atomic(run_dir / "case.yaml", dump_case_yaml(c));
-  std::string log;
+  if (!o.resume) run::write_atomic(run_dir / "case.yaml", dump_case_yaml(c));
+  std::string log = o.resume ? read_text(run_dir / "log.txt") : std::string();
   auto logln = [&](const std::string& s) {
     log += s + "\n";
     if (!o.progress) return;
@@ -215,7 +306,22 @@ RunResult run_case(const RunOptions& o) {
                  {"disable_steps", o.skips.disable_steps}, {"cull", o.skips.cull}, {"cull_ahead_m", o.skips.cull_ahead_m},
                  {"cull_behind_m", o.skips.cull_behind_m}}},
       {"end_walls", o.end_walls},
-      {"settle_s", o.settle_s}};
+      {"settle_s", o.settle_s},
+      {"ode_options", options_json(o)},
+      {"resumes", nlohmann::json::array()}};
+  if (o.resume) {
+    const auto old = nlohmann::json::parse(read_text(run_dir / "meta.json"));
+    if (old.value("status", "") == "complete") {
+      if (o.progress) fmt::print(stderr, "[brash-ode] {}: already complete, nothing to resume\n", run_dir.string());
+      RunResult r;
+      r.run_dir = run_dir;
+      r.particles = spheres.size();
+      return r;
+    }
+    meta = old;
+    meta["status"] = "running";
+    meta["reason"] = "";
+  }
   run::write_meta(run_dir, meta);
 
   RunResult res;
@@ -252,17 +358,75 @@ RunResult run_case(const RunOptions& o) {
                       to_string(c.fluid.ca_table), c.fluid.drag_coefficient, to_string(c.fluid.drag_law)));
     logln(fmt::format("run dir {}", run_dir.string()));
 
-    // Optional settling with the hull parked.
-    const long settle_steps = std::lround(o.settle_s / st.dt_s);
+    // Optional settling with the hull parked (on resume the restart file holds the state after it).
+    const long settle_steps = o.resume ? 0 : std::lround(o.settle_s / st.dt_s);
     for (long k = 0; k < settle_steps; ++k) w.step();
     if (settle_steps) logln(fmt::format("settled {} s ({} steps)", o.settle_s, settle_steps));
     w.set_hull_velocity(Vec3(speed, 0, 0));
-    const long ps_settle = w.stats().particle_steps;
-    const auto stats0 = w.stats();
+    long ps_settle = w.stats().particle_steps;
+    auto stats0 = w.stats();
+    // Loop state that a restart file carries besides the world.
+    long k0 = 0;
+    Vec3 acc = Vec3::Zero();
+    double win_sum = 0, wall_before = 0;
+    long win_n = 0;
+    if (o.resume) {
+      const auto found = restart::load_latest(run_dir / "restart");
+      for (const auto& rej : found.rejected) logln("resume: skipped " + rej);
+      restart::Reader r(found.payload);
+      k0 = r.get<long>();
+      ps_settle = r.get<long>();
+      stats0.wall_fluid_s = r.get<double>();
+      stats0.wall_collide_s = r.get<double>();
+      stats0.wall_step_s = r.get<double>();
+      acc = r.get_vec3();
+      win_sum = r.get<double>();
+      win_n = r.get<long>();
+      wall_before = r.get<double>();
+      w.load_state(r);
+      const double t_r = double(k0) * st.dt_s;
+      // Outputs: keep only what was written up to the restart point.
+      std::istringstream in(read_text(run_dir / "hull_force.csv"));
+      std::string line;
+      long kept = 0, dropped = 0;
+      std::getline(in, line);  // header
+      while (std::getline(in, line)) {
+        if (line.empty()) continue;
+        if (std::stod(line.substr(0, line.find(','))) <= t_r + 0.25 * st.dt_s) {
+          csv += line + "\n";
+          ++kept;
+        } else {
+          ++dropped;
+        }
+      }
+      std::istringstream ix(read_text(run_dir / "particles" / "index.csv"));
+      std::getline(ix, line);
+      while (std::getline(ix, line))
+        if (!line.empty() && std::stol(line.substr(0, line.find(','))) <= k0) index += line + "\n";
+      meta["resumes"].push_back({{"from_file", found.file.filename().string()}, {"step", k0}, {"t_s", t_r},
+                                 {"rejected", found.rejected}, {"hull_force_rows_dropped", dropped}});
+      logln(fmt::format("resumed from {} at step {} (t = {} s): kept {} hull force rows, dropped {} later ones",
+                        found.file.string(), k0, t_r, kept, dropped));
+    }
+    auto save_restart = [&](long step, double wall) {
+      restart::Writer rw;
+      rw.put<long>(step);
+      rw.put<long>(ps_settle);
+      rw.put<double>(stats0.wall_fluid_s);
+      rw.put<double>(stats0.wall_collide_s);
+      rw.put<double>(stats0.wall_step_s);
+      rw.put(acc);
+      rw.put<double>(win_sum);
+      rw.put<long>(win_n);
+      rw.put<double>(wall);
+      w.save_state(rw);
+      return restart::write(run_dir / "restart", step, rw.bytes(), 2);
+    };
 
     const long steps = std::lround(duration / st.dt_s);
     const long n_out = std::max(1L, std::lround(c.run.output_interval_s / st.dt_s));
     const long n_dump = std::max(1L, std::lround(c.run.dump_interval_s / st.dt_s));
+    const long n_restart = o.restart_every_s > 0 ? std::max(1L, std::lround(o.restart_every_s / st.dt_s)) : 0;
     const bool tty = isatty(2);
     auto dump = [&](long step) {
       std::string s = "id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z\n";
@@ -281,21 +445,19 @@ RunResult run_case(const RunOptions& o) {
       index += fmt::format("{},{:.9g},{},{:.9g}\n", step, double(step) * st.dt_s, name, w.hull_position().x());
       run::write_atomic(run_dir / "particles" / "index.csv", index);
     };
-    auto flush = [&](long step, double wall) {
+    auto flush = [&](long step, double wall) {  // wall: this process's time; wall_before adds earlier ones
       run::write_atomic(run_dir / "hull_force.csv", csv);
       run::write_atomic(run_dir / "log.txt", log);
-      meta["wall_time_s"] = wall;
+      meta["wall_time_s"] = wall_before + wall;
       meta["particle_steps"] = w.stats().particle_steps - ps_settle;
       meta["steps_done"] = step;
       run::write_meta(run_dir, meta);
     };
-    dump(0);
-    Vec3 acc = Vec3::Zero();
-    double win_sum = 0;
-    long win_n = 0;
+    if (!o.resume) dump(0);
     const auto loop0 = clock::now();
+    const long ps_loop0 = w.stats().particle_steps;
     auto last_print = loop0;
-    for (long k = 1; k <= steps; ++k) {
+    for (long k = k0 + 1; k <= steps; ++k) {
       w.step();
       const Vec3& f = w.hull_force();
       if (!f.allFinite())
@@ -316,10 +478,16 @@ RunResult run_case(const RunOptions& o) {
         dump(k);
         flush(k, std::chrono::duration<double>(now - t_start).count());
       }
+      if (n_restart && k % n_restart == 0 && k < steps) {
+        // hull_force.csv first (rows up to t), then the restart file: a resume drops rows after its restart time.
+        flush(k, std::chrono::duration<double>(now - t_start).count());
+        save_restart(k, wall_before + std::chrono::duration<double>(now - t_start).count());
+      }
+      if (k == o.crash_after_step) std::_Exit(137);
       if (o.progress && (std::chrono::duration<double>(now - last_print).count() > 1.0 || k == steps)) {
         last_print = now;
         const double el = std::chrono::duration<double>(now - loop0).count();
-        const double eta = el / double(k) * double(steps - k);
+        const double eta = el / double(k - k0) * double(steps - k);
         const auto line = fmt::format("t = {:.3f} / {:.3f} s ({:3.0f}%)  elapsed {}  ETA {}  Fx {:+.3f} N  awake {}  contacts {}",
                                       t, duration, 100.0 * double(k) / double(steps), hms(el), hms(eta), f.x(),
                                       w.stats().awake_last, w.stats().contacts_last);
@@ -331,7 +499,7 @@ RunResult run_case(const RunOptions& o) {
     if (o.progress && tty) fmt::print(stderr, "\n");
     const auto now = clock::now();
     res.loop_time_s = std::chrono::duration<double>(now - loop0).count();
-    res.wall_time_s = std::chrono::duration<double>(now - t_start).count();
+    res.wall_time_s = wall_before + std::chrono::duration<double>(now - t_start).count();
     res.steps = steps;
     res.simulated_s = duration;
     res.stats = w.stats();
@@ -339,17 +507,20 @@ RunResult run_case(const RunOptions& o) {
     res.mean_fx_window_N = win_n ? win_sum / double(win_n) : NAN;
     meta["status"] = "complete";
     meta["loop_time_s"] = res.loop_time_s;
-    meta["particle_steps_per_s"] = double(res.particle_steps) / res.loop_time_s;
-    meta["wall_s_per_simulated_s"] = res.loop_time_s / duration;
+    // Rates from this process's loop only (a resumed run: the steps since the restart point).
+    const double ps_this = double(w.stats().particle_steps - ps_loop0);
+    meta["particle_steps_per_s"] = ps_this / res.loop_time_s;
+    meta["wall_s_per_simulated_s"] = res.loop_time_s / (duration - double(k0) * st.dt_s);
     meta["phase_wall_s"] = {{"fluid", res.stats.wall_fluid_s - stats0.wall_fluid_s},
                             {"collide", res.stats.wall_collide_s - stats0.wall_collide_s},
                             {"quickstep", res.stats.wall_step_s - stats0.wall_step_s}};
     meta["mean_fx_window_N"] = res.mean_fx_window_N;
     logln(fmt::format("done: {} steps in {:.1f} s ({:.3g} particle-steps/s, {:.1f} s wall per simulated s); "
                       "mean Fx over [{}, {}] s = {:.4f} N",
-                      steps, res.loop_time_s, double(res.particle_steps) / res.loop_time_s, res.loop_time_s / duration,
+                      steps - k0, res.loop_time_s, ps_this / res.loop_time_s,
+                      res.loop_time_s / (duration - double(k0) * st.dt_s),
                       c.run.window_s[0], c.run.window_s[1], res.mean_fx_window_N));
-    flush(steps, res.wall_time_s);
+    flush(steps, res.wall_time_s - wall_before);
   } catch (const std::exception& e) {
     log += std::string("error: ") + e.what() + "\n";
     meta["status"] = "failed";

@@ -10,10 +10,15 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "brash/ode/restart.hpp"
+
 namespace brash::ode {
 namespace {
 
 constexpr unsigned kSphereBit = 1u, kHullBit = 2u, kWallBit = 4u;
+// Geom data: sphere index + 1 for spheres (0 = hull), kWallTag + wall index for walls.
+constexpr std::size_t kWallTag = std::size_t(1) << 40;
+bool is_sphere_tag(std::size_t t) { return t != 0 && t < kWallTag; }
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -99,7 +104,7 @@ void World::add_wall_box(const Vec3& c, const Vec3& size) {
   dGeomSetPosition(g, c.x(), c.y(), c.z());
   dGeomSetCategoryBits(g, kWallBit);
   dGeomSetCollideBits(g, kSphereBit);
-  dGeomSetData(g, nullptr);
+  dGeomSetData(g, reinterpret_cast<void*>(static_cast<std::uintptr_t>(kWallTag + walls_.size())));
   walls_.push_back(g);
 }
 
@@ -228,13 +233,19 @@ void World::apply_fluid() {
 void World::near_callback(void* data, dGeomID a, dGeomID b) { static_cast<World*>(data)->collide_pair(a, b); }
 
 void World::collide_pair(dGeomID a, dGeomID b) {
-  // Order: sphere first (the robust feedback rule of ode.md: attach sphere first, F_hull = -sum f1).
-  std::size_t ia = untag(a), ib = untag(b);
-  if (ia == 0) {
+  // Order: sphere first (the robust feedback rule of ode.md: attach sphere first, F_hull = -sum f1); for two
+  // spheres the lower index first, so a pair always collides the same way round whatever the broad phase does.
+  std::size_t ta = untag(a), tb = untag(b);
+  if (!is_sphere_tag(ta)) {
     std::swap(a, b);
-    std::swap(ia, ib);
+    std::swap(ta, tb);
   }
-  if (ia == 0) return;  // hull-wall (never reaches here thanks to the collide bits)
+  if (!is_sphere_tag(ta)) return;  // hull-wall (never reaches here thanks to the collide bits)
+  if (is_sphere_tag(tb) && tb < ta) {
+    std::swap(a, b);
+    std::swap(ta, tb);
+  }
+  const std::size_t ia = ta, ib = is_sphere_tag(tb) ? tb : 0;
   SphereRec& sa = spheres_[ia - 1];
   const bool hull = (b == hull_geom_);
   SphereRec* sb = ib ? &spheres_[ib - 1] : nullptr;
@@ -262,6 +273,7 @@ void World::collide_pair(dGeomID a, dGeomID b) {
     std::swap(ba, bb);
     flip = true;
   }
+  const std::size_t key = hull ? kPartnerHull : (ib ? ib - 1 : kPartnerWall + (tb - kWallTag));
   for (int i = 0; i < n; ++i) {
     dContact& c = contact_buf_[static_cast<std::size_t>(i)];
     if (flip) {  // the normal points into g1's body: swap the geoms and reverse it
@@ -271,14 +283,26 @@ void World::collide_pair(dGeomID a, dGeomID b) {
     c.surface.mode = dContactApprox1;
     c.surface.mu = mu;
     c.surface.bounce = 0;
-    dJointID j = dJointCreateContact(world_, contacts_, &c);
-    dJointAttach(j, ba, bb);
-    if (hull) {
+    pending_.push_back(PendingContact{ia - 1, key, i, ba, bb, hull, c});
+  }
+  contacts_this_step_ += static_cast<std::size_t>(n);
+}
+
+void World::create_joints() {
+  std::sort(pending_.begin(), pending_.end(), [](const PendingContact& x, const PendingContact& y) {
+    if (x.a != y.a) return x.a < y.a;
+    if (x.key != y.key) return x.key < y.key;
+    return x.slot < y.slot;
+  });
+  for (auto& p : pending_) {
+    dJointID j = dJointCreateContact(world_, contacts_, &p.c);
+    dJointAttach(j, p.ba, p.bb);
+    if (p.hull) {
       hull_feedback_.emplace_back();
       dJointSetFeedback(j, &hull_feedback_.back());
     }
   }
-  contacts_this_step_ += static_cast<std::size_t>(n);
+  pending_.clear();
 }
 
 void World::step() {
@@ -290,7 +314,9 @@ void World::step() {
   t0 = clock::now();
   hull_feedback_.clear();
   contacts_this_step_ = 0;
+  pending_.clear();
   dSpaceCollide(space_, this, &World::near_callback);
+  create_joints();
   stats_.wall_collide_s += seconds_since(t0);
   t0 = clock::now();
   dWorldQuickStep(world_, stepper_.dt_s);
@@ -303,6 +329,100 @@ void World::step() {
   stats_.contacts_last = contacts_this_step_;
   stats_.steps += 1;
   stats_.t_s = static_cast<double>(stats_.steps) * stepper_.dt_s;
+}
+
+}  // namespace brash::ode
+
+// ------------------------------------------------------------------------------------------------ restart
+namespace brash::ode {
+
+void World::save_state(restart::Writer& w) const {
+  w.put<std::uint64_t>(spheres_.size());
+  w.put<std::uint64_t>(walls_.size());
+  w.put<std::uint8_t>(hull_body_ ? 1 : 0);
+  w.put<std::uint64_t>(static_cast<std::uint64_t>(dRandGetSeed()));
+  w.put<long>(stats_.steps);
+  w.put<long>(stats_.particle_steps);
+  w.put<double>(stats_.wall_fluid_s);
+  w.put<double>(stats_.wall_collide_s);
+  w.put<double>(stats_.wall_step_s);
+  if (hull_body_) {
+    const dReal* p = dBodyGetPosition(hull_body_);
+    const dReal* v = dBodyGetLinearVel(hull_body_);
+    for (int k = 0; k < 3; ++k) w.put<double>(p[k]);
+    for (int k = 0; k < 3; ++k) w.put<double>(v[k]);
+  }
+  for (const auto& s : spheres_) {
+    w.put<double>(s.radius_m);
+    w.put<double>(s.mass_kg);
+    w.put<double>(s.ode_mass_kg);
+    const dReal* p = dBodyGetPosition(s.body);
+    const dReal* q = dBodyGetQuaternion(s.body);
+    const dReal* v = dBodyGetLinearVel(s.body);
+    const dReal* a = dBodyGetAngularVel(s.body);
+    for (int k = 0; k < 3; ++k) w.put<double>(p[k]);
+    for (int k = 0; k < 4; ++k) w.put<double>(q[k]);
+    for (int k = 0; k < 3; ++k) w.put<double>(v[k]);
+    for (int k = 0; k < 3; ++k) w.put<double>(a[k]);
+    w.put<std::uint8_t>(dBodyIsEnabled(s.body) ? 1 : 0);
+    w.put<std::uint8_t>(dBodyGetAutoDisableFlag(s.body) ? 1 : 0);
+    w.put<std::uint8_t>(s.culled ? 1 : 0);
+    w.put(s.state.velocity_prev_m_s);
+    w.put<std::uint8_t>(s.state.has_prev ? 1 : 0);
+    w.put(s.last.ca);
+  }
+}
+
+void World::load_state(restart::Reader& r) {
+  const auto n = r.get<std::uint64_t>();
+  const auto nw = r.get<std::uint64_t>();
+  const bool hull = r.get<std::uint8_t>() != 0;
+  if (n != spheres_.size() || nw != walls_.size() || hull != (hull_body_ != nullptr))
+    throw std::runtime_error(fmt::format("restart holds {} spheres, {} walls, {} hull; the scene has {}, {}, {}", n, nw,
+                                         hull ? "a" : "no", spheres_.size(), walls_.size(), hull_body_ ? "a" : "no"));
+  dRandSetSeed(static_cast<unsigned long>(r.get<std::uint64_t>()));
+  stats_.steps = r.get<long>();
+  stats_.particle_steps = r.get<long>();
+  stats_.wall_fluid_s = r.get<double>();
+  stats_.wall_collide_s = r.get<double>();
+  stats_.wall_step_s = r.get<double>();
+  stats_.t_s = static_cast<double>(stats_.steps) * stepper_.dt_s;
+  if (hull_body_) {
+    const Vec3 p = r.get_vec3(), v = r.get_vec3();
+    dBodySetPosition(hull_body_, p.x(), p.y(), p.z());
+    dBodySetLinearVel(hull_body_, v.x(), v.y(), v.z());
+  }
+  for (std::size_t i = 0; i < spheres_.size(); ++i) {
+    auto& s = spheres_[i];
+    const double radius = r.get<double>(), mass = r.get<double>(), M = r.get<double>();
+    if (radius != s.radius_m || mass != s.mass_kg)
+      throw std::runtime_error(fmt::format("restart sphere {}: radius {} m / mass {} kg, the scene has {} m / {} kg", i + 1,
+                                           radius, mass, s.radius_m, s.mass_kg));
+    dReal p[3], q[4], v[3], a[3];
+    for (auto& x : p) x = r.get<double>();
+    for (auto& x : q) x = r.get<double>();
+    for (auto& x : v) x = r.get<double>();
+    for (auto& x : a) x = r.get<double>();
+    const bool enabled = r.get<std::uint8_t>() != 0;
+    const bool adis = r.get<std::uint8_t>() != 0;
+    s.culled = r.get<std::uint8_t>() != 0;
+    s.state.velocity_prev_m_s = r.get_vec3();
+    s.state.has_prev = r.get<std::uint8_t>() != 0;
+    s.last = {};
+    s.last.ca = r.get_vec3();
+    s.ode_mass_kg = -1;  // force dBodySetMass
+    set_ode_mass(s, M);
+    dBodySetPosition(s.body, p[0], p[1], p[2]);
+    dBodySetQuaternion(s.body, q);
+    dBodySetLinearVel(s.body, v[0], v[1], v[2]);
+    dBodySetAngularVel(s.body, a[0], a[1], a[2]);
+    dBodySetForce(s.body, 0, 0, 0);
+    dBodySetTorque(s.body, 0, 0, 0);
+    dBodySetAutoDisableFlag(s.body, adis ? 1 : 0);
+    if (enabled) dBodyEnable(s.body);
+    else dBodyDisable(s.body);
+  }
+  if (!r.done()) throw std::runtime_error("restart payload has trailing bytes (written by a different brash-ode?)");
 }
 
 }  // namespace brash::ode

@@ -1,6 +1,7 @@
 // brash-ode's case runner: case folder -> ODE scene (packing spheres, kinematic hull trimesh, side walls)
 // -> run directory in the common layout (docs/case_format.md): case.yaml, meta.json, hull_force.csv,
-// particles/, restart/ (empty: no ODE restart yet), log.txt. All files are written atomically.
+// particles/, restart/ (restart_<step>.bin every restart_every_s, the last two kept; see restart.hpp), log.txt.
+// All files are written atomically. A killed run continues with resume = true (brash-ode --resume RUN_DIR).
 #pragma once
 #include <filesystem>
 #include <string>
@@ -23,6 +24,11 @@ struct RunOptions {
   double settle_s = 0;                 // simulated settling with the hull parked at start_x (not in t)
   bool progress = true;                // progress line with ETA on stderr
   double overlap_tolerance_over_d = 1e-4;  // packing overlaps beyond this fraction of d_mean are errors
+  double restart_every_s = 0.1;        // simulated time between restart files (0 = none)
+  // Resume the run in out_dir from its newest intact restart file: every other option is taken from the run's
+  // meta.json ("ode_options"), except progress and crash_after_step.
+  bool resume = false;
+  long crash_after_step = -1;          // testing: std::_Exit(137) right after this step (a kill -9: no cleanup)
 };
 
 struct RunResult {

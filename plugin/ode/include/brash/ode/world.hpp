@@ -33,6 +33,11 @@
 
 namespace brash::ode {
 
+namespace restart {
+class Writer;
+class Reader;
+}  // namespace restart
+
 using core::Vec3;
 
 enum class ImplicitMode { EffectiveMass, ScaleForces };
@@ -95,6 +100,14 @@ class World {
 
   void step();
 
+  // Restart: the full dynamic state (per sphere: position, quaternion, linear and angular velocity, enabled,
+  // culled and auto-disable flags, ODE mass, core::FluidState, last Ca; the hull position and velocity; ODE's
+  // random seed, used by quickstep's constraint reordering; the step counters). load_state expects a world built
+  // the same way (same spheres in the same order, same hull and walls) and throws std::runtime_error otherwise.
+  // Not restored: ODE's auto-disable averaging buffers (with --auto-disable a resume is not bit-exact).
+  void save_state(restart::Writer& w) const;
+  void load_state(restart::Reader& r);
+
   // Extra ODE velocity damping on every sphere (per-step scale factors, threshold 0), for preparing a bed
   // at rest (settling); set (0, angular_damping) back before the measured run. Not a physical force.
   void set_damping(double linear_per_step, double angular_per_step);
@@ -135,6 +148,8 @@ class World {
   };
   static void near_callback(void* data, dGeomID a, dGeomID b);
   void collide_pair(dGeomID a, dGeomID b);
+  void create_joints();
+  static constexpr std::size_t kPartnerWall = std::size_t(1) << 40, kPartnerHull = std::size_t(1) << 41;
   void apply_fluid();
   void update_cull();
   void set_ode_mass(SphereRec& s, double M);
@@ -157,6 +172,17 @@ class World {
   std::array<double, 3> hull_min_{0, 0, 0}, hull_max_{0, 0, 0};
   std::deque<dJointFeedback> hull_feedback_;
   std::vector<dContact> contact_buf_;
+  // Contacts of one step, created as joints in a fixed order (sphere index, partner) after the collision
+  // pass, so the joint order does not depend on the broad phase's internal order (needed for exact restarts).
+  struct PendingContact {
+    std::size_t a = 0;       // sphere index
+    std::size_t key = 0;     // partner: sphere index, or kPartnerWall + wall index, or kPartnerHull
+    int slot = 0;            // contact number within the pair
+    dBodyID ba = nullptr, bb = nullptr;
+    bool hull = false;
+    dContact c{};
+  };
+  std::vector<PendingContact> pending_;
   Vec3 hull_force_N_ = Vec3::Zero();
   std::size_t hull_contacts_ = 0;
   std::size_t contacts_this_step_ = 0;

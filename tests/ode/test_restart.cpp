@@ -1,0 +1,156 @@
+// brash-ode restart / resume (issue 10 item 4) on a small scene: the YADE smoke case (720 spheres d 35 mm,
+// the JBC bow entering the ice), 0.2 s at dt 5e-4 (400 steps), restart file every 0.04 s (80 steps).
+//   - uninterrupted run A;
+//   - run B stopped like a kill -9 after step 230 (hidden --crash-after-step: std::_Exit, no cleanup), then
+//     `brash-ode --resume B` (from restart 160; the hull_force.csv rows at 0.09 and 0.10 s that were flushed
+//     after it are dropped first) -> same hull force rows and final positions as A;
+//   - run C killed with a real SIGKILL as soon as its first restart file exists, then resumed -> same as A;
+//   - run D stopped after step 230 with its newest restart file truncated -> resume falls back to restart 80;
+//   - all restart files broken -> exit 1 naming the files.
+// The run binary is BRASH_ODE_EXE; the case folder BRASH_SMOKE_CASE; the hull comes from $BRASH_HULL_DIR.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kRoot = fs::temp_directory_path() / ("brash_ode_restart_" + std::to_string(::getpid()));
+
+int run(const std::string& cmd) {
+  const int st = std::system(cmd.c_str());
+  return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+std::string base_cmd(const fs::path& out) {
+  return std::string("'") + BRASH_ODE_EXE + "' '" + BRASH_SMOKE_CASE + "' --out '" + out.string() +
+         "' --duration 0.2 --restart-every 0.04 --no-progress";
+}
+
+std::string resume_cmd(const fs::path& dir) {
+  return std::string("'") + BRASH_ODE_EXE + "' --resume '" + dir.string() + "' --no-progress > /dev/null";
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::vector<std::vector<double>> read_csv(const fs::path& p) {
+  std::istringstream in(slurp(p));
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::vector<double> r;
+    std::istringstream ls(line);
+    std::string cell;
+    while (std::getline(ls, cell, ',')) r.push_back(std::stod(cell));
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+// Max |a - b| over all cells of columns [c0, c1); expects the same shape.
+double max_diff(const fs::path& a, const fs::path& b, std::size_t c0, std::size_t c1) {
+  const auto ra = read_csv(a), rb = read_csv(b);
+  EXPECT_EQ(ra.size(), rb.size()) << a << " vs " << b;
+  double m = 0;
+  for (std::size_t i = 0; i < std::min(ra.size(), rb.size()); ++i) {
+    EXPECT_EQ(ra[i].size(), rb[i].size());
+    EXPECT_EQ(ra[i][0], rb[i][0]) << "row " << i;  // time / id column
+    for (std::size_t c = c0; c < std::min({c1, ra[i].size(), rb[i].size()}); ++c) m = std::max(m, std::abs(ra[i][c] - rb[i][c]));
+  }
+  return m;
+}
+
+class Restart : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    fs::remove_all(kRoot);
+    fs::create_directories(kRoot);
+    ASSERT_EQ(run(base_cmd(kRoot / "A") + " > /dev/null"), 0);
+  }
+  static void TearDownTestSuite() { fs::remove_all(kRoot); }
+
+  // Same hull force rows and final particle state as the uninterrupted run A.
+  static void expect_same_as_a(const fs::path& dir, const std::string& what) {
+    const double df = max_diff(kRoot / "A" / "hull_force.csv", dir / "hull_force.csv", 1, 4);
+    const double dx = max_diff(kRoot / "A" / "particles" / "particles_400.csv", dir / "particles" / "particles_400.csv", 1, 4);
+    const double dv = max_diff(kRoot / "A" / "particles" / "particles_400.csv", dir / "particles" / "particles_400.csv", 5, 8);
+    // dx, dv: from the dumps' printed digits (%.9g, %.6g), so 1e-12 m / 1e-7 m/s is the last printed digit.
+    std::printf("[%s] max |dF| = %.3g N over 20 rows, max |dx| = %.3g m, max |dv| = %.3g m/s (720 spheres, t = 0.2 s); "
+                "hull_force.csv byte-identical: %s\n",
+                what.c_str(), df, dx, dv,
+                slurp(kRoot / "A" / "hull_force.csv") == slurp(dir / "hull_force.csv") ? "yes" : "no");
+    EXPECT_LE(df, 1e-6);   // N (forces are O(1-10) N)
+    EXPECT_LE(dx, 1e-9);   // m
+    EXPECT_LE(dv, 1e-6);   // m/s
+    EXPECT_NE(slurp(dir / "meta.json").find("\"status\": \"complete\""), std::string::npos);
+  }
+};
+
+TEST_F(Restart, StopAfterStepThenResumeReproducesTheUninterruptedRun) {
+  const fs::path b = kRoot / "B";
+  ASSERT_EQ(run(base_cmd(b) + " --crash-after-step 230"), 137);
+  EXPECT_NE(slurp(b / "meta.json").find("\"status\": \"running\""), std::string::npos);
+  EXPECT_TRUE(fs::exists(b / "restart" / "restart_0000000080.bin"));
+  EXPECT_TRUE(fs::exists(b / "restart" / "restart_0000000160.bin"));  // the last two are kept
+  EXPECT_EQ(read_csv(b / "hull_force.csv").size(), 10u);             // flushed at t = 0.1 s (dump), after restart 160
+  ASSERT_EQ(run(resume_cmd(b)), 0);
+  const std::string meta = slurp(b / "meta.json");
+  EXPECT_NE(meta.find("\"hull_force_rows_dropped\": 2"), std::string::npos) << meta;
+  EXPECT_NE(meta.find("restart_0000000160.bin"), std::string::npos);
+  expect_same_as_a(b, "stop after step 230, resume from 160");
+  // Resuming a complete run does nothing.
+  EXPECT_EQ(run(resume_cmd(b)), 0);
+}
+
+TEST_F(Restart, RealKill9ThenResume) {
+  const fs::path c = kRoot / "C";
+  const std::string cmd = base_cmd(c) + " > /dev/null 2>&1 & pid=$!; i=0; while [ $i -lt 2000 ] && ! ls '" +
+                          (c / "restart").string() + "'/restart_*.bin > /dev/null 2>&1; do sleep 0.01; i=$((i+1)); done; "
+                          "kill -9 $pid; wait $pid; echo $? > '" + (kRoot / "C.rc").string() + "'";
+  run(cmd);  // std::system runs it with sh
+  const std::string rc = slurp(kRoot / "C.rc");
+  std::printf("[kill -9] exit status of the killed run: %s", rc.c_str());
+  if (rc.rfind("137", 0) != 0) GTEST_SKIP() << "the run ended before the kill (status " << rc << ")";
+  ASSERT_EQ(run(resume_cmd(c)), 0);
+  expect_same_as_a(c, "kill -9 at the first restart file, resume");
+}
+
+TEST_F(Restart, TruncatedNewestRestartFallsBackToThePreviousOne) {
+  const fs::path d = kRoot / "D";
+  ASSERT_EQ(run(base_cmd(d) + " --crash-after-step 230"), 137);
+  const fs::path newest = d / "restart" / "restart_0000000160.bin";
+  fs::resize_file(newest, fs::file_size(newest) / 2);
+  ASSERT_EQ(run(resume_cmd(d)), 0);
+  const std::string log = slurp(d / "log.txt");
+  EXPECT_NE(log.find("skipped " + newest.string() + ": truncated"), std::string::npos) << log;
+  EXPECT_NE(log.find("restart_0000000080.bin at step 80"), std::string::npos) << log;
+  EXPECT_NE(slurp(d / "meta.json").find("\"hull_force_rows_dropped\": 6"), std::string::npos);
+  expect_same_as_a(d, "newest restart truncated, resume from 80");
+}
+
+TEST_F(Restart, NoUsableRestartFileIsAClearError) {
+  const fs::path e = kRoot / "E";
+  ASSERT_EQ(run(base_cmd(e) + " --crash-after-step 100"), 137);
+  for (const auto& p : fs::directory_iterator(e / "restart")) std::ofstream(p.path(), std::ios::trunc) << "junk";
+  const fs::path err = kRoot / "E.err";
+  EXPECT_EQ(run(resume_cmd(e) + " 2> '" + err.string() + "'"), 1);
+  const std::string msg = slurp(err);
+  EXPECT_NE(msg.find("no usable restart file"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("restart_0000000080.bin: not a brash-ode restart file or truncated"), std::string::npos) << msg;
+}
+
+}  // namespace
