@@ -17,21 +17,13 @@
 #include "brash/hull/mesh.hpp"
 #include "brash/packing.hpp"
 #include "brash/run_layout.hpp"
+#include "brash/runner_setup.hpp"
 #include "liggghts_input.h"
 
 namespace fs = std::filesystem;
 using brash::InputError;
 
 namespace {
-
-fs::path bin_dir() { return fs::read_symlink("/proc/self/exe").parent_path(); }
-
-int run_command(const std::string& cmd) {
-  const int rc = std::system(cmd.c_str());
-  return WIFEXITED(rc) ? WEXITSTATUS(rc) : 128;
-}
-
-std::string quote(const fs::path& p) { return "'" + p.string() + "'"; }
 
 // hull_force*.raw (fix ave/time: "step t fx fy fz") -> hull_force.csv "t_s,fx_N,fy_N,fz_N". The raw
 // files of a resumed run are read in order; a later file's row for a step replaces an earlier one.
@@ -147,9 +139,9 @@ struct EngineResult {
 
 // Runs the engine, copies its screen output to log.txt and prints progress with an ETA.
 EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, const std::string& input = "in.lmp") {
-  std::string cmd = "cd " + quote(run_dir) + " && ";
+  std::string cmd = "cd " + brash::run::shell_quote(run_dir) + " && ";
   if (ranks > 1) cmd += fmt::format("mpirun --allow-run-as-root --oversubscribe -np {} ", ranks);
-  cmd += quote(bin_dir() / "brash-liggghts") + " -in " + input + " -log none 2>&1";
+  cmd += brash::run::shell_quote(brash::run::executable_dir() / "brash-liggghts") + " -in " + input + " -log none 2>&1";
   EngineResult res;
   std::ofstream log(run_dir / "log.txt", std::ios::app);
   FILE* pipe = ::popen(cmd.c_str(), "r");
@@ -230,42 +222,11 @@ int main(int argc, char** argv) {
                                                             : case_dir;
     if (resume && !fs::exists(case_file))
       throw InputError(resume_dir.string() + ": not a run directory (no case.yaml)");
-    const fs::path case_root = case_file.parent_path();
     // Overrides go through the YAML text so they are validated like any case key.
-    brash::Case c = brash::load_case(case_file);
-    std::string yaml = brash::dump_case_yaml(c);
-    auto set_key = [&](const std::string& section, const std::string& key, const std::string& value) {
-      const std::string pat = "\n  " + key + ":";
-      const auto sec = yaml.find("\n" + section + ":");
-      const auto pos = yaml.find(pat, sec);
-      if (sec == std::string::npos || pos == std::string::npos) throw InputError("cannot override " + key);
-      const auto eol = yaml.find('\n', pos + 1);
-      yaml.replace(pos, eol - pos, pat + " " + value);
-    };
-    if (!model.empty()) set_key("fluid", "model", model);
-    if (!treatment.empty()) set_key("fluid", "treatment", treatment);
-    if (duration > 0) {
-      set_key("run", "duration_s", fmt::format("{}", duration));
-      if (duration < c.run.window_s[1]) {  // keep the window inside a shortened run, and say so
-        const double start = std::min(c.run.window_s[0], 0.5 * duration);
-        set_key("run", "window_s", fmt::format("[{}, {}]", start, duration));
-        std::cerr << fmt::format("[brash-liggghts] --duration {} s is shorter than the window: window set to [{}, {}] s\n",
-                                 duration, start, duration);
-      }
-    }
-    c = brash::parse_case(yaml, case_root, case_file.string() + " (with command-line overrides)");
+    brash::run::CaseOverrides overrides{model, treatment, duration};
+    const brash::Case c = brash::run::load_case_with_overrides(case_file, overrides, "[brash-liggghts]");
+    brash::run::prepare_case_inputs(c, case_file, "[brash-liggghts]");
     const double run_duration = c.run.duration_s;
-
-    // Inputs: packing (generated on first use, cached in the case folder) and hull.
-    if (!fs::exists(c.ice.packing_file)) {
-      std::cerr << "[brash-liggghts] generating the packing " << c.ice.packing_file << "\n";
-      if (run_command(quote(bin_dir() / "brash-pack") + " " + quote(case_root)) != 0)
-        throw InputError(case_file.string() + ": brash-pack failed to generate " + c.ice.packing_file.string());
-    }
-    if (!fs::exists(c.hull.file))
-      throw InputError(fmt::format("{}: hull.file {} not found (searched the case folder, $BRASH_HULL_DIR, "
-                                   "<build>/hull_meshes, <repo>/hull_meshes); build it with `make build`",
-                                   case_file.string(), c.hull.file.string()));
     auto spheres = brash::read_packing_csv(c.ice.packing_file);
     if (c.speedups.symmetry_y) spheres = brash::liggghts::half_channel_spheres(spheres);
     auto mesh = brash::hull::read_mesh(c.hull.file);
@@ -382,12 +343,12 @@ int main(int argc, char** argv) {
   }
   std::cout << run_dir.string() << "\n";
   if (!no_post) {
-    const auto post = bin_dir() / "brash-post";
+    const auto post = brash::run::executable_dir() / "brash-post";
     if (!fs::exists(post)) {
       std::cerr << "[brash-liggghts] brash-post not built; skipping the report\n";
       return 0;
     }
-    return run_command(quote(post) + " " + quote(run_dir));
+    return brash::run::run_shell(brash::run::shell_quote(post) + " " + brash::run::shell_quote(run_dir));
   }
   return 0;
 }

@@ -19,20 +19,12 @@
 #include "brash/hull/mesh.hpp"
 #include "brash/packing.hpp"
 #include "brash/run_layout.hpp"
+#include "brash/runner_setup.hpp"
 
 namespace fs = std::filesystem;
 using brash::InputError;
 
 namespace {
-
-fs::path bin_dir() { return fs::read_symlink("/proc/self/exe").parent_path(); }
-
-std::string quote(const fs::path& p) { return "'" + p.string() + "'"; }
-
-int run_command(const std::string& cmd) {
-  const int rc = std::system(cmd.c_str());
-  return WIFEXITED(rc) ? WEXITSTATUS(rc) : 128;
-}
 
 // Where the scene script and the module are: next to the build by default, overridable.
 fs::path env_or(const char* var, const char* fallback) {
@@ -50,8 +42,8 @@ EngineResult run_yade(const fs::path& run_dir, int threads) {
   fs::create_directories(home);
   const std::string cmd = fmt::format(
       "cd {} && HOME={} PYTHONPATH={}${{PYTHONPATH:+:$PYTHONPATH}} OMP_NUM_THREADS={} {} -n -j{} -x {} scene.json 2>&1",
-      quote(run_dir), quote(home), quote(env_or("BRASH_YADE_PYDIR", BRASH_YADE_PYDIR)), threads,
-      quote(env_or("BRASH_YADE_EXE", BRASH_YADE_EXE)), threads, quote(env_or("BRASH_YADE_SCRIPT", BRASH_YADE_SCRIPT)));
+      brash::run::shell_quote(run_dir), brash::run::shell_quote(home), brash::run::shell_quote(env_or("BRASH_YADE_PYDIR", BRASH_YADE_PYDIR)), threads,
+      brash::run::shell_quote(env_or("BRASH_YADE_EXE", BRASH_YADE_EXE)), threads, brash::run::shell_quote(env_or("BRASH_YADE_SCRIPT", BRASH_YADE_SCRIPT)));
   EngineResult res;
   std::ofstream log(run_dir / "log.txt");
   FILE* pipe = ::popen(cmd.c_str(), "r");
@@ -99,40 +91,9 @@ int main(int argc, char** argv) {
   nlohmann::json meta;
   try {
     const fs::path case_file = fs::is_directory(case_dir) ? case_dir / "case.yaml" : case_dir;
-    const fs::path case_root = case_file.parent_path();
-    brash::Case c = brash::load_case(case_file);
-    // Overrides go through the YAML text so they are validated like any case key.
-    std::string yaml = brash::dump_case_yaml(c);
-    auto set_key = [&](const std::string& section, const std::string& key, const std::string& value) {
-      const std::string pat = "\n  " + key + ":";
-      const auto sec = yaml.find("\n" + section + ":");
-      const auto pos = yaml.find(pat, sec);
-      if (sec == std::string::npos || pos == std::string::npos) throw InputError("cannot override " + key);
-      const auto eol = yaml.find('\n', pos + 1);
-      yaml.replace(pos, eol - pos, pat + " " + value);
-    };
-    if (!model.empty()) set_key("fluid", "model", model);
-    if (!treatment.empty()) set_key("fluid", "treatment", treatment);
-    if (duration > 0) {
-      set_key("run", "duration_s", fmt::format("{}", duration));
-      if (duration < c.run.window_s[1]) {
-        const double start = std::min(c.run.window_s[0], 0.5 * duration);
-        set_key("run", "window_s", fmt::format("[{}, {}]", start, duration));
-        std::cerr << fmt::format("[brash-yade] --duration {} s is shorter than the window: window set to [{}, {}] s\n",
-                                 duration, start, duration);
-      }
-    }
-    c = brash::parse_case(yaml, case_root, case_file.string() + " (with command-line overrides)");
-
-    if (!fs::exists(c.ice.packing_file)) {
-      std::cerr << "[brash-yade] generating the packing " << c.ice.packing_file << "\n";
-      if (run_command(quote(bin_dir() / "brash-pack") + " " + quote(case_root)) != 0)
-        throw InputError(case_file.string() + ": brash-pack failed to generate " + c.ice.packing_file.string());
-    }
-    if (!fs::exists(c.hull.file))
-      throw InputError(fmt::format("{}: hull.file {} not found (searched the case folder, $BRASH_HULL_DIR, "
-                                   "<build>/hull_meshes, <repo>/hull_meshes); build it with `make build`",
-                                   case_file.string(), c.hull.file.string()));
+    brash::run::CaseOverrides overrides{model, treatment, duration};
+    const brash::Case c = brash::run::load_case_with_overrides(case_file, overrides, "[brash-yade]");
+    brash::run::prepare_case_inputs(c, case_file, "[brash-yade]");
     const auto spheres = brash::read_packing_csv(c.ice.packing_file);
     auto mesh = brash::hull::read_mesh(c.hull.file);
     brash::hull::require_plausible_units(mesh, c.hull.file, c.hull.draft_m, c.hull.lpp_m);
@@ -230,12 +191,12 @@ int main(int argc, char** argv) {
   }
   std::cout << run_dir.string() << "\n";
   if (!no_post) {
-    const auto post = bin_dir() / "brash-post";
+    const auto post = brash::run::executable_dir() / "brash-post";
     if (!fs::exists(post)) {
       std::cerr << "[brash-yade] brash-post not built; skipping the report\n";
       return 0;
     }
-    return run_command(quote(post) + " " + quote(run_dir));
+    return brash::run::run_shell(brash::run::shell_quote(post) + " " + brash::run::shell_quote(run_dir));
   }
   return 0;
 }

@@ -1,0 +1,66 @@
+// Shared runner set-up (see runner_setup.hpp).
+#include "brash/runner_setup.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <fmt/format.h>
+#include <iostream>
+#include <sys/wait.h>
+
+#include "brash/error.hpp"
+
+namespace fs = std::filesystem;
+
+namespace brash::run {
+
+fs::path executable_dir() { return fs::read_symlink("/proc/self/exe").parent_path(); }
+
+std::string shell_quote(const fs::path& p) {
+  std::string out = "'";
+  for (char ch : p.string()) out += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+  return out + "'";
+}
+
+int run_shell(const std::string& command) {
+  const int rc = std::system(command.c_str());
+  return WIFEXITED(rc) ? WEXITSTATUS(rc) : 128;
+}
+
+Case load_case_with_overrides(const fs::path& case_file, const CaseOverrides& o, const std::string& tag) {
+  Case c = load_case(case_file);
+  std::string yaml = dump_case_yaml(c);
+  auto set_key = [&](const std::string& section, const std::string& key, const std::string& value) {
+    const std::string pat = "\n  " + key + ":";
+    const auto sec = yaml.find("\n" + section + ":");
+    const auto pos = sec == std::string::npos ? sec : yaml.find(pat, sec);
+    if (pos == std::string::npos) throw InputError(fmt::format("cannot override {}.{}", section, key));
+    const auto eol = yaml.find('\n', pos + 1);
+    yaml.replace(pos, eol - pos, pat + " " + value);
+  };
+  if (!o.model.empty()) set_key("fluid", "model", o.model);
+  if (!o.treatment.empty()) set_key("fluid", "treatment", o.treatment);
+  if (o.duration_s > 0) {
+    set_key("run", "duration_s", fmt::format("{}", o.duration_s));
+    if (o.duration_s < c.run.window_s[1]) {  // keep the window inside a shortened run, and say so
+      const double start = std::min(c.run.window_s[0], 0.5 * o.duration_s);
+      set_key("run", "window_s", fmt::format("[{}, {}]", start, o.duration_s));
+      std::cerr << fmt::format("{} --duration {} s is shorter than the window: window set to [{}, {}] s\n", tag,
+                               o.duration_s, start, o.duration_s);
+    }
+  }
+  return parse_case(yaml, case_file.parent_path(), case_file.string() + " (with command-line overrides)");
+}
+
+void prepare_case_inputs(const Case& c, const fs::path& case_file, const std::string& tag) {
+  if (!fs::exists(c.ice.packing_file)) {
+    std::cerr << tag << " generating the packing " << c.ice.packing_file << "\n";
+    if (run_shell(shell_quote(executable_dir() / "brash-pack") + " " + shell_quote(case_file.parent_path())) != 0)
+      throw InputError(case_file.string() + ": brash-pack failed to generate " + c.ice.packing_file.string());
+  }
+  if (!fs::exists(c.hull.file))
+    throw InputError(fmt::format("{}: hull.file {} not found (searched the case folder, $BRASH_HULL_DIR, "
+                                 "<build>/hull_meshes, <repo>/hull_meshes); build it with `make build`",
+                                 case_file.string(), c.hull.file.string()));
+}
+
+}  // namespace brash::run
