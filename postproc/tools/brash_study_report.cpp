@@ -1,0 +1,630 @@
+// brash-study-report: the study document (docs/study.md) generated from a study manifest and the
+// report.json of every run it lists (issue 11). Nothing in the document is typed by hand: every number
+// comes from a report.json and every run is listed with the command that produced it.
+//
+// Manifest (tab-separated, one header line naming the columns, '#' lines are comments):
+//   id  group  label  param  value  baseline  base_case  exit_code  run_dir  command
+// required: group, run_dir, command; the others may be empty. One run may appear in several rows
+// (e.g. the baseline run is the reference of every sensitivity group). run_dir is relative to the
+// manifest's folder unless absolute.
+// Groups: `paper` (table a), `speed` (table b, value = speed), `engine` (table d), anything else is a
+// sensitivity group (table c) whose rows with baseline = 1 are the reference.
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <tuple>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <brash/post/report.hpp>
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+constexpr double kPaperRatio = 2.54;
+
+struct Row {  // one manifest row
+  std::string id, group, label, param, value, base_case, command;
+  bool baseline = false;
+  std::optional<int> exit_code;
+  fs::path run_dir;
+};
+
+struct Run {  // one run directory (several rows may share it)
+  std::string ref;  // R1, R2, ... in order of first appearance
+  fs::path run_dir;
+  std::string command, base_case;
+  std::optional<int> exit_code;
+  bool ok = false;
+  std::string problem;  // why the run is not usable (missing, failed, ...)
+  std::vector<std::string> warnings;
+  std::string engine = "?", model = "?", case_name = "?";
+  double mean_N = 0, ci_N = 0, full_kN = 0, full_ci_kN = 0, speed = 0, lambda = 0;
+  double window0 = 0, window1 = 0, t_last = 0, wall_s = 0, psteps = 0;
+  std::optional<double> rch_kN, ratio;
+  std::optional<double> lpp, beam, draft, alpha, phi2, awf;
+};
+
+std::string trim(std::string s) {
+  while (!s.empty() && (s.back() == '\r' || s.back() == ' ')) s.pop_back();
+  std::size_t i = 0;
+  while (i < s.size() && s[i] == ' ') ++i;
+  return s.substr(i);
+}
+
+std::vector<std::string> split_tabs(const std::string& line) {
+  std::vector<std::string> out;
+  std::stringstream ss(line);
+  std::string f;
+  while (std::getline(ss, f, '\t')) out.push_back(trim(f));
+  if (!line.empty() && line.back() == '\t') out.emplace_back();
+  return out;
+}
+
+std::vector<Row> read_manifest(const fs::path& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(fmt::format("{}: cannot open the manifest", path.string()));
+  std::vector<std::string> header;
+  std::vector<Row> rows;
+  std::string line;
+  int lineno = 0;
+  const fs::path base = fs::absolute(path).parent_path();
+  while (std::getline(in, line)) {
+    ++lineno;
+    if (trim(line).empty() || line[0] == '#') continue;
+    auto f = split_tabs(line);
+    if (header.empty()) {
+      header = f;
+      for (const char* need : {"group", "run_dir", "command"})
+        if (std::find(header.begin(), header.end(), need) == header.end())
+          throw std::runtime_error(fmt::format("{}: header lacks the column '{}'", path.string(), need));
+      continue;
+    }
+    std::map<std::string, std::string> m;
+    for (std::size_t i = 0; i < header.size(); ++i) m[header[i]] = i < f.size() ? f[i] : "";
+    Row r;
+    r.id = m["id"];
+    r.group = m["group"];
+    r.label = m["label"];
+    r.param = m["param"];
+    r.value = m["value"];
+    r.base_case = m["base_case"];
+    r.command = m["command"];
+    r.baseline = m["baseline"] == "1" || m["baseline"] == "yes" || m["baseline"] == "true";
+    if (!m["exit_code"].empty()) {
+      try {
+        r.exit_code = std::stoi(m["exit_code"]);
+      } catch (const std::exception&) {
+        throw std::runtime_error(fmt::format("{}:{}: exit_code '{}' is not an integer", path.string(), lineno, m["exit_code"]));
+      }
+    }
+    if (r.group.empty()) throw std::runtime_error(fmt::format("{}:{}: empty group", path.string(), lineno));
+    if (!m["run_dir"].empty()) {
+      fs::path d = m["run_dir"];
+      r.run_dir = d.is_absolute() ? d : base / d;
+    }
+    rows.push_back(r);
+  }
+  if (header.empty()) throw std::runtime_error(fmt::format("{}: empty manifest", path.string()));
+  return rows;
+}
+
+template <class T>
+std::optional<T> opt(const json& j, const json::json_pointer& p) {
+  if (!j.contains(p) || j.at(p).is_null()) return std::nullopt;
+  try {
+    return j.at(p).get<T>();
+  } catch (const json::exception&) {
+    return std::nullopt;
+  }
+}
+
+void load_report(Run& r) {
+  if (r.exit_code && *r.exit_code != 0) r.problem = fmt::format("runner exited with code {}", *r.exit_code);
+  if (r.run_dir.empty()) {
+    if (r.problem.empty()) r.problem = "no run directory recorded";
+    return;
+  }
+  const fs::path rp = r.run_dir / "report.json";
+  if (!fs::exists(rp)) {
+    r.problem += (r.problem.empty() ? "" : "; ") + std::string("no report.json");
+    return;
+  }
+  json j;
+  try {
+    std::ifstream in(rp);
+    j = json::parse(in);
+  } catch (const std::exception& e) {
+    r.problem += (r.problem.empty() ? "" : "; ") + fmt::format("report.json unreadable ({})", e.what());
+    return;
+  }
+  using P = json::json_pointer;
+  r.engine = opt<std::string>(j, P("/engine")).value_or("?");
+  r.model = opt<std::string>(j, P("/fluid_model")).value_or("?");
+  r.case_name = opt<std::string>(j, P("/case")).value_or("?");
+  const auto status = opt<std::string>(j, P("/status")).value_or("?");
+  const auto mean = opt<double>(j, P("/resistance_model_N/mean"));
+  if (status != "complete")
+    r.problem += (r.problem.empty() ? "" : "; ") + fmt::format("run status '{}'", status);
+  if (!mean) r.problem += (r.problem.empty() ? "" : "; ") + std::string("report.json has no resistance_model_N.mean");
+  if (!r.problem.empty()) return;
+  r.ok = true;
+  r.mean_N = *mean;
+  r.ci_N = opt<double>(j, P("/resistance_model_N/ci95")).value_or(NAN);
+  r.full_kN = opt<double>(j, P("/resistance_full_kN")).value_or(NAN);
+  r.full_ci_kN = opt<double>(j, P("/resistance_full_ci95_kN")).value_or(NAN);
+  r.speed = opt<double>(j, P("/speed_m_s")).value_or(NAN);
+  r.lambda = opt<double>(j, P("/lambda")).value_or(NAN);
+  r.window0 = opt<double>(j, P("/window_s/0")).value_or(NAN);
+  r.window1 = opt<double>(j, P("/window_s/1")).value_or(NAN);
+  r.t_last = opt<double>(j, P("/record/t_last_s")).value_or(NAN);
+  r.wall_s = opt<double>(j, P("/wall_time_s")).value_or(NAN);
+  r.psteps = opt<double>(j, P("/particle_steps")).value_or(NAN);
+  r.rch_kN = opt<double>(j, P("/fsicr/R_CH_kN"));
+  r.ratio = opt<double>(j, P("/ratio_fsicr_to_sim"));
+  r.lpp = opt<double>(j, P("/fsicr/params/L_m"));
+  r.beam = opt<double>(j, P("/fsicr/params/B_m"));
+  r.draft = opt<double>(j, P("/fsicr/params/T_m"));
+  r.alpha = opt<double>(j, P("/fsicr/params/alpha_deg"));
+  r.phi2 = opt<double>(j, P("/fsicr/params/phi2_deg"));
+  r.awf = opt<double>(j, P("/fsicr/params/A_wf_m2"));
+  if (opt<bool>(j, P("/complete")) == false) {
+    if (opt<bool>(j, P("/window_truncated")).value_or(false)) r.warnings.push_back("window truncated");
+    if (opt<bool>(j, P("/window_fallback")).value_or(false)) r.warnings.push_back("window fallback (last half)");
+    if (r.warnings.empty()) r.warnings.push_back("report not complete");
+  }
+  if (opt<bool>(j, P("/resistance_model_N/blocking/plateau_found")) == false)
+    r.warnings.push_back("CI is a lower bound (no blocking plateau)");
+}
+
+// ---- numbers --------------------------------------------------------------------------------------
+std::string num(double v, int prec = 2) {
+  if (!std::isfinite(v)) return "n/a";
+  return fmt::format("{:.{}f}", v, prec);
+}
+std::string pm(double v, double ci, int prec = 2) { return fmt::format("{} ± {}", num(v, prec), num(ci, prec)); }
+std::string optnum(const std::optional<double>& v, int prec = 2) { return v ? num(*v, prec) : "n/a"; }
+
+struct Fit {
+  std::string engine, model;
+  std::size_t points = 0;
+  double n = NAN, n_se = NAN, a = NAN;  // R = a U^n (R in N at model scale, U in m/s)
+  std::vector<std::string> refs;
+};
+
+// Least squares of ln R = ln a + n ln U; SE of the slope from the residual variance (needs >= 3 points).
+Fit fit_power_law(const std::vector<std::pair<double, double>>& uv) {
+  Fit f;
+  f.points = uv.size();
+  if (uv.size() < 2) return f;
+  double sx = 0, sy = 0;
+  for (auto [u, r] : uv) sx += std::log(u), sy += std::log(r);
+  const double k = static_cast<double>(uv.size());
+  const double mx = sx / k, my = sy / k;
+  double sxx = 0, sxy = 0;
+  for (auto [u, r] : uv) {
+    const double dx = std::log(u) - mx;
+    sxx += dx * dx;
+    sxy += dx * (std::log(r) - my);
+  }
+  if (sxx <= 0) return f;
+  f.n = sxy / sxx;
+  f.a = std::exp(my - f.n * mx);
+  if (uv.size() >= 3) {
+    double ssr = 0;
+    for (auto [u, r] : uv) {
+      const double e = std::log(r) - (my + f.n * (std::log(u) - mx));
+      ssr += e * e;
+    }
+    f.n_se = std::sqrt(ssr / (k - 2.0) / sxx);
+  }
+  return f;
+}
+
+std::string scale_label(const Run& r) {
+  const std::string window = fmt::format("window [{}, {}] s", num(r.window0), num(r.window1));
+  if (r.base_case == "jbc_ia_5kn")
+    return fmt::format("paper case jbc_ia_5kn, {}", window);
+  return fmt::format("**reduced case** ({} based on {}; not the paper case), {}", r.case_name,
+                     r.base_case.empty() ? std::string("?") : r.base_case, window);
+}
+
+std::string status_cell(const Run& r) {
+  if (!r.ok) return "**FAILED/MISSING: " + r.problem + "**";
+  std::string s;
+  for (const auto& w : r.warnings) s += (s.empty() ? "" : "; ") + w;
+  return s.empty() ? "ok" : s;
+}
+
+struct Study {
+  std::vector<Row> rows;
+  std::map<fs::path, Run> runs;  // by run dir (empty path: one per failed row, keyed by a fake path)
+  std::vector<fs::path> order;
+  Run& run_of(const Row& r) { return runs.at(key_of(r)); }
+  std::map<const Row*, fs::path> keys;
+  fs::path key_of(const Row& r) const { return keys.at(&r); }
+};
+
+void build(Study& s) {
+  int fake = 0;
+  for (const auto& row : s.rows) {
+    fs::path key = row.run_dir.empty() ? fs::path(fmt::format("<no run dir #{}>", ++fake)) : row.run_dir.lexically_normal();
+    s.keys[&row] = key;
+    auto it = s.runs.find(key);
+    if (it == s.runs.end()) {
+      Run r;
+      r.ref = fmt::format("R{}", s.order.size() + 1);
+      r.run_dir = row.run_dir;
+      r.command = row.command;
+      r.base_case = row.base_case;
+      r.exit_code = row.exit_code;
+      load_report(r);
+      s.runs.emplace(key, r);
+      s.order.push_back(key);
+    } else if (row.exit_code && *row.exit_code != 0 && it->second.ok) {
+      it->second.ok = false;
+      it->second.problem = fmt::format("runner exited with code {}", *row.exit_code);
+    }
+  }
+}
+
+std::string md_escape(std::string s) {
+  std::string o;
+  for (char c : s) {
+    if (c == '|') o += "\\|";
+    else o += c;
+  }
+  return o;
+}
+
+// ---- sections -------------------------------------------------------------------------------------
+void section_failures(const Study& s, std::string& md) {
+  std::vector<const Run*> bad;
+  for (const auto& k : s.order)
+    if (!s.runs.at(k).ok) bad.push_back(&s.runs.at(k));
+  md += "## Runs that failed or are missing\n\n";
+  if (bad.empty()) {
+    md += "None: every run listed in the manifest has a complete report.json.\n\n";
+    return;
+  }
+  md += fmt::format("**{} of {} run(s) have no usable result.** They are kept in every table below with "
+                    "their reason, never dropped.\n\n| run | run dir | reason |\n|---|---|---|\n",
+                    bad.size(), s.order.size());
+  for (const Run* r : bad)
+    md += fmt::format("| {} | `{}` | {} |\n", r->ref, r->run_dir.string(), md_escape(r->problem));
+  md += "\n";
+}
+
+void section_paper(Study& s, std::string& md) {
+  md += "## (a) Paper comparison\n\n";
+  std::vector<const Row*> rows;
+  for (const auto& r : s.rows)
+    if (r.group == "paper") rows.push_back(&r);
+  if (rows.empty()) {
+    md += "No run of group `paper` in this study.\n\n";
+    return;
+  }
+  bool any_paper = false;
+  for (const Row* r : rows) any_paper = any_paper || (s.run_of(*r).ok && s.run_of(*r).base_case == "jbc_ia_5kn");
+  if (!any_paper)
+    md += "**No completed run of the paper case (cases/jbc_ia_5kn) is in this study. Every row below is a "
+          "reduced case: its full-scale number is the reduced scene scaled by lambda^3, NOT the paper's result "
+          "and not comparable one to one with 393 / 378 kN.**\n\n";
+  md += "Paper (Kogakuin): added mass 393 kN, drag 378 kN (difference +4.0 %), FSICR R_CH 999 kN, ratio R_CH / "
+        "R_sim 2.54. Our R_CH uses the hull parameters measured on our STL (columns L, B, T, alpha, phi2, A_wf at "
+        "full scale).\n\n";
+  md += "| run | case / scale | engine | fluid model | R model [N] ± CI95 | R full [kN] ± CI95 | paper R full [kN] | "
+        "R_CH ours [kN] | paper R_CH [kN] | ratio ours | paper ratio | status |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const Row* row : rows) {
+    const Run& r = s.run_of(*row);
+    using PV = brash::post::PaperValues;
+    const std::string paper_R = r.model == "added_mass" ? num(PV::added_mass_full_kN, 0)
+                                : r.model == "drag"     ? num(PV::drag_full_kN, 0)
+                                                        : "n/a";
+    if (!r.ok) {
+      md += fmt::format("| {} | {} | {} | {} | — | — | {} | — | 999 | — | {} | {} |\n", r.ref,
+                        md_escape(row->label.empty() ? row->base_case : row->label), r.engine, r.model, paper_R,
+                        num(kPaperRatio), status_cell(r));
+      continue;
+    }
+    md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | 999 | {} | {} | {} |\n", r.ref, scale_label(r),
+                      r.engine, r.model, pm(r.mean_N, r.ci_N), pm(r.full_kN, r.full_ci_kN, 1), paper_R,
+                      optnum(r.rch_kN, 0), optnum(r.ratio), num(kPaperRatio), status_cell(r));
+  }
+  md += "\nHull parameters used for R_CH (full scale, measured on the STL by brash-post):\n\n"
+        "| run | L [m] | B [m] | T [m] | alpha [deg] | phi2 [deg] | A_wf [m²] |\n|---|---|---|---|---|---|---|\n";
+  std::set<std::string> seen;
+  for (const Row* row : rows) {
+    const Run& r = s.run_of(*row);
+    if (!r.ok || !seen.insert(r.ref).second) continue;
+    md += fmt::format("| {} | {} | {} | {} | {} | {} | {} |\n", r.ref, optnum(r.lpp), optnum(r.beam),
+                      optnum(r.draft), optnum(r.alpha, 1), optnum(r.phi2, 1), optnum(r.awf, 0));
+  }
+  // Added mass vs drag, per engine and base case.
+  md += "\nAdded mass vs drag (same engine and case): (R_added_mass - R_drag) / R_drag; paper: (393 - 378) / 378 = "
+        "+4.0 %.\n\n| engine | case | R added mass [N] | R drag [N] | difference | CI95 of the difference |\n"
+        "|---|---|---|---|---|---|\n";
+  std::map<std::pair<std::string, std::string>, std::map<std::string, const Run*>> by;
+  for (const Row* row : rows) {
+    const Run& r = s.run_of(*row);
+    if (r.ok) by[{r.engine, r.base_case}][r.model] = &r;
+  }
+  bool any = false;
+  for (const auto& [k, m] : by) {
+    if (!m.count("added_mass") || !m.count("drag")) continue;
+    const Run& a = *m.at("added_mass");
+    const Run& d = *m.at("drag");
+    const double diff = (a.mean_N - d.mean_N) / d.mean_N * 100.0;
+    // first-order propagation of the two independent CIs into the ratio a/d
+    const double ci = 100.0 * (a.mean_N / d.mean_N) * std::hypot(a.ci_N / a.mean_N, d.ci_N / d.mean_N);
+    md += fmt::format("| {} | {} | {} ({}) | {} ({}) | {:+.1f} % | ± {:.1f} % |\n", k.first, k.second,
+                      pm(a.mean_N, a.ci_N), a.ref, pm(d.mean_N, d.ci_N), d.ref, diff, ci);
+    any = true;
+  }
+  if (!any) md += "| — | — | — | — | no completed added_mass + drag pair | — |\n";
+  md += "\n";
+}
+
+void section_speed(Study& s, std::string& md, const fs::path& plot_png, json& summary) {
+  md += "## (b) Speed sweep: R ∝ U^n\n\n";
+  std::vector<const Row*> rows;
+  for (const auto& r : s.rows)
+    if (r.group == "speed") rows.push_back(&r);
+  summary["fits"] = json::array();
+  if (rows.empty()) {
+    md += "No run of group `speed` in this study.\n\n";
+    return;
+  }
+  md += "Model-scale resistance vs model-scale speed; n = slope of a least-squares line through (ln U, ln R), "
+        "± its standard error (needs >= 3 speeds). Tanks show a linear trend (n ≈ 1), earlier simulations "
+        "quadratic (n ≈ 2).\n\n"
+        "| run | engine | fluid model | U [m/s] | R model [N] ± CI95 | R full [kN] ± CI95 | case / scale | status |\n"
+        "|---|---|---|---|---|---|---|---|\n";
+  std::map<std::pair<std::string, std::string>, std::vector<const Run*>> groups;
+  for (const Row* row : rows) {
+    const Run& r = s.run_of(*row);
+    if (!r.ok) {
+      md += fmt::format("| {} | {} | {} | {} | — | — | {} | {} |\n", r.ref, r.engine, r.model, row->value,
+                        md_escape(row->base_case), status_cell(r));
+      continue;
+    }
+    md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n", r.ref, r.engine, r.model, num(r.speed, 3),
+                      pm(r.mean_N, r.ci_N), pm(r.full_kN, r.full_ci_kN, 1), scale_label(r), status_cell(r));
+    auto& g = groups[{r.engine, r.model}];
+    if (std::find(g.begin(), g.end(), &r) == g.end()) g.push_back(&r);
+  }
+  md += "\n| engine | fluid model | speeds | n ± SE | a in R = a U^n [N] | runs |\n|---|---|---|---|---|---|\n";
+  std::vector<Fit> fits;
+  for (auto& [k, g] : groups) {
+    std::vector<std::pair<double, double>> uv;
+    Fit f;
+    std::vector<std::string> refs;
+    for (const Run* r : g) {
+      refs.push_back(r->ref);
+      if (r->speed > 0 && r->mean_N > 0) uv.emplace_back(r->speed, r->mean_N);
+    }
+    f = fit_power_law(uv);
+    f.engine = k.first;
+    f.model = k.second;
+    f.refs = refs;
+    std::string refs_s;
+    for (const auto& x : refs) refs_s += (refs_s.empty() ? "" : ", ") + x;
+    const std::string nse = std::isfinite(f.n_se) ? fmt::format("{:.3f} ± {:.3f}", f.n, f.n_se)
+                            : std::isfinite(f.n)  ? fmt::format("{:.3f} (no SE: {} speeds)", f.n, f.points)
+                                                  : fmt::format("n/a ({} usable speed(s))", f.points);
+    md += fmt::format("| {} | {} | {} | {} | {} | {} |\n", f.engine, f.model, f.points, nse, num(f.a, 3), refs_s);
+    summary["fits"].push_back({{"engine", f.engine}, {"fluid_model", f.model}, {"points", f.points},
+                               {"n", std::isfinite(f.n) ? json(f.n) : json(nullptr)},
+                               {"n_se", std::isfinite(f.n_se) ? json(f.n_se) : json(nullptr)},
+                               {"a", std::isfinite(f.a) ? json(f.a) : json(nullptr)}});
+    fits.push_back(f);
+  }
+  md += "\n";
+  // Plot (gnuplot pngcairo): points with CI bars and the fitted lines, log-log.
+  if (plot_png.empty()) return;
+  const fs::path dat = fs::path(plot_png).replace_extension(".dat");
+  const fs::path gp = fs::path(plot_png).replace_extension(".gp");
+  {
+    std::ofstream d(dat);
+    int block = 0;
+    for (auto& [k, g] : groups) {
+      d << "# " << k.first << " " << k.second << "\n";
+      for (const Run* r : g) d << fmt::format("{} {} {}\n", r->speed, r->mean_N, r->ci_N);
+      d << "\n\n";
+      ++block;
+    }
+    std::ofstream p(gp);
+    p << "set terminal pngcairo size 900,600\nset output '" << plot_png.string() << "'\n"
+      << "set logscale xy\nset xlabel 'ship speed U [m/s] (model scale)'\nset ylabel 'resistance R [N] (model scale)'\n"
+      << "set key left top\nset grid\nset title 'Speed sweep: R = a U^n (least squares in log-log)'\nplot ";
+    int i = 0;
+    for (const Fit& f : fits) {
+      if (i) p << ", ";
+      p << fmt::format("'{}' index {} using 1:2:3 with yerrorbars pt 7 lc {} title '{} {}'", dat.string(), i, i + 1,
+                       f.engine, f.model);
+      if (std::isfinite(f.n))
+        p << fmt::format(", {} * x**{} with lines lc {} title 'fit n = {:.2f}'", f.a, f.n, i + 1, f.n);
+      ++i;
+    }
+    p << "\n";
+  }
+  const int rc = std::system(fmt::format("gnuplot '{}' 2>'{}.err'", gp.string(), gp.string()).c_str());
+  if (rc == 0 && fs::exists(plot_png))
+    md += fmt::format("![speed sweep]({})\n\nPlot: `{}` (data `{}`, script `{}`).\n\n", plot_png.filename().string(),
+                      plot_png.filename().string(), dat.filename().string(), gp.filename().string());
+  else
+    md += fmt::format("Plot not produced: `gnuplot {}` failed (exit {}); see `{}.err`.\n\n", gp.string(), rc, gp.string());
+}
+
+void section_sensitivity(Study& s, std::string& md) {
+  md += "## (c) Sensitivities\n\n";
+  std::vector<std::string> groups;
+  for (const auto& r : s.rows)
+    if (r.group != "paper" && r.group != "speed" && r.group != "engine" &&
+        std::find(groups.begin(), groups.end(), r.group) == groups.end())
+      groups.push_back(r.group);
+  for (const char* expected : {"ca", "friction_ice", "density_ice"})
+    if (std::find(groups.begin(), groups.end(), expected) == groups.end())
+      md += fmt::format("Group `{}`: no run in this study.\n\n", expected);
+  for (const auto& g : groups) {
+    std::string param;
+    for (const auto& r : s.rows)
+      if (r.group == g && !r.param.empty()) param = r.param;
+    md += fmt::format("### {} (parameter `{}`)\n\nChange vs the baseline of the same engine and fluid model; "
+                      "\"Δ / CI\" = change over the combined CI95 sqrt(CI² + CI_base²): |Δ / CI| < 1 means the "
+                      "change is not resolved by these runs.\n\n"
+                      "| run | value | engine | fluid model | R model [N] ± CI95 | R full [kN] ± CI95 | Δ vs baseline [N] | Δ / CI | status |\n"
+                      "|---|---|---|---|---|---|---|---|---|\n",
+                      g, param.empty() ? "?" : param);
+    std::map<std::pair<std::string, std::string>, const Run*> base;
+    for (const auto& r : s.rows)
+      if (r.group == g && r.baseline && s.run_of(r).ok) base[{s.run_of(r).engine, s.run_of(r).model}] = &s.run_of(r);
+    for (const auto& row : s.rows) {
+      if (row.group != g) continue;
+      const Run& r = s.run_of(row);
+      const std::string value = row.value + (row.baseline ? " (baseline)" : "");
+      if (!r.ok) {
+        md += fmt::format("| {} | {} | {} | {} | — | — | — | — | {} |\n", r.ref, md_escape(value), r.engine, r.model,
+                          status_cell(r));
+        continue;
+      }
+      std::string d = "no baseline", dci = "—";
+      auto it = base.find({r.engine, r.model});
+      if (row.baseline) {
+        d = "—";
+      } else if (it != base.end()) {
+        const Run& b = *it->second;
+        const double delta = r.mean_N - b.mean_N;
+        const double comb = std::hypot(r.ci_N, b.ci_N);
+        d = fmt::format("{:+.2f} ({:+.1f} %)", delta, delta / b.mean_N * 100.0);
+        dci = comb > 0 ? fmt::format("{:+.2f}", delta / comb) : "n/a";
+      }
+      md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", r.ref, md_escape(value), r.engine, r.model,
+                        pm(r.mean_N, r.ci_N), pm(r.full_kN, r.full_ci_kN, 1), d, dci, status_cell(r));
+    }
+    md += "\n";
+  }
+}
+
+void section_engines(Study& s, std::string& md) {
+  md += "## (d) Engines\n\n";
+  std::vector<const Run*> runs;
+  std::set<std::string> engines;
+  for (const auto& row : s.rows) {
+    if (row.group != "engine" && row.group != "paper") continue;
+    const Run& r = s.run_of(row);
+    if (std::find(runs.begin(), runs.end(), &r) != runs.end()) continue;
+    runs.push_back(&r);
+    if (r.ok) engines.insert(r.engine);
+  }
+  if (engines.size() < 2) {
+    md += fmt::format("Only {} engine(s) with completed runs in groups `paper`/`engine` ({}); the engine table "
+                      "needs at least two of LIGGGHTS, ODE, YADE.\n\n",
+                      engines.size(), engines.empty() ? std::string("none") : *engines.begin());
+  }
+  bool failed = false;
+  for (const Run* r : runs) failed = failed || !r->ok;
+  if (engines.size() < 2 && !failed) return;
+  std::sort(runs.begin(), runs.end(), [](const Run* a, const Run* b) {
+    return std::tie(a->base_case, a->model, a->engine) < std::tie(b->base_case, b->model, b->engine);
+  });
+  md += "| run | case | fluid model | engine | R model [N] ± CI95 | R full [kN] ± CI95 | wall time [s] | particle-steps/s | status |\n"
+        "|---|---|---|---|---|---|---|---|---|\n";
+  for (const Run* r : runs) {
+    if (!r->ok) {
+      md += fmt::format("| {} | {} | {} | {} | — | — | — | — | {} |\n", r->ref, r->base_case, r->model, r->engine,
+                        status_cell(*r));
+      continue;
+    }
+    md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", r->ref, r->base_case, r->model, r->engine,
+                      pm(r->mean_N, r->ci_N), pm(r->full_kN, r->full_ci_kN, 1), num(r->wall_s, 0),
+                      r->wall_s > 0 ? fmt::format("{:.3g}", r->psteps / r->wall_s) : "n/a", status_cell(*r));
+  }
+  md += "\n";
+}
+
+void section_runs(Study& s, std::string& md) {
+  md += "## (e) Runs and the commands that produced them\n\n"
+        "| run | run dir | case | engine | fluid model | status | command |\n|---|---|---|---|---|---|---|\n";
+  for (const auto& k : s.order) {
+    const Run& r = s.runs.at(k);
+    md += fmt::format("| {} | `{}` | {} | {} | {} | {} | `{}` |\n", r.ref, r.run_dir.string(), r.case_name, r.engine,
+                      r.model, status_cell(r), md_escape(r.command));
+  }
+  md += "\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"brash-study-report: docs/study.md from a study manifest and the report.json of its runs"};
+  std::string manifest, out = "docs/study.md", plot, summary_path, title = "brash study", study_command;
+  app.add_option("manifest", manifest, "study manifest (tab-separated, see the file header)")->required();
+  app.add_option("--out", out, "markdown output")->capture_default_str();
+  app.add_option("--plot", plot, "speed-sweep PNG (default: <out stem>_speed.png next to --out; 'none' = no plot)");
+  app.add_option("--summary-json", summary_path, "also write the fits and run statuses as JSON");
+  app.add_option("--title", title, "document title")->capture_default_str();
+  app.add_option("--study-command", study_command, "the command that ran the whole study (shown at the top)");
+  CLI11_PARSE(app, argc, argv);
+  try {
+    Study s;
+    s.rows = read_manifest(manifest);
+    build(s);
+    fs::path out_p = out;
+    if (out_p.has_parent_path()) fs::create_directories(out_p.parent_path());
+    fs::path plot_p;
+    if (plot != "none")
+      plot_p = plot.empty() ? out_p.parent_path() / (out_p.stem().string() + "_speed.png") : fs::path(plot);
+    json summary;
+    std::string md = fmt::format("# {}\n\n", title);
+    md += fmt::format("Generated by `brash-study-report` from the manifest `{}` and the report.json of every run it "
+                      "lists; do not edit by hand{}.\n",
+                      fs::path(manifest).filename().string(),
+                      study_command.empty() ? "" : fmt::format(" (re-run: `{}`)", study_command));
+    md += "Each number carries the id of its run (R1, R2, ...); section (e) lists the command of each run. CI95 = 95 % "
+          "confidence interval of the windowed mean from block averaging (brash-post). \"reduced case\" = a small "
+          "scene (cases/jbc_bench and variants), not the paper's 417k-sphere channel.\n\n";
+    section_failures(s, md);
+    section_paper(s, md);
+    section_speed(s, md, plot_p, summary);
+    section_sensitivity(s, md);
+    section_engines(s, md);
+    section_runs(s, md);
+    {
+      const fs::path tmp = out_p.string() + ".tmp";
+      std::ofstream o(tmp);
+      o << md;
+      o.close();
+      if (!o) throw std::runtime_error("cannot write " + tmp.string());
+      fs::rename(tmp, out_p);
+    }
+    summary["runs"] = json::array();
+    std::size_t failed = 0;
+    for (const auto& k : s.order) {
+      const Run& r = s.runs.at(k);
+      failed += r.ok ? 0 : 1;
+      summary["runs"].push_back({{"ref", r.ref}, {"run_dir", r.run_dir.string()}, {"ok", r.ok}, {"problem", r.problem}});
+    }
+    summary["failed"] = failed;
+    if (!summary_path.empty()) std::ofstream(summary_path) << summary.dump(2) << "\n";
+    fmt::print("brash-study-report: {} ({} run(s), {} failed or missing)\n", out_p.string(), s.order.size(), failed);
+    return 0;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "brash-study-report: {}\n", e.what());
+    return 2;
+  }
+}

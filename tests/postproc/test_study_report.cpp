@@ -1,0 +1,154 @@
+// brash-study-report on synthetic report.json files: exact exponent fit on R = a U^n, tables carry the
+// values, failed and missing runs are reported (never dropped), paper rows of reduced cases are labelled.
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / fmt::format("brash_study_{}_{}", name, ::getpid());
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+void write_report(const fs::path& run_dir, const std::string& engine, const std::string& model, double speed,
+                  double mean, double ci, const std::string& status = "complete") {
+  fs::create_directories(run_dir);
+  const double lambda = 28.5, scale = std::pow(lambda, 3) * 1.025 / 1000.0;
+  json j = {{"engine", engine}, {"fluid_model", model}, {"treatment", "implicit"}, {"case", run_dir.filename().string()},
+            {"status", status}, {"complete", status == "complete"}, {"speed_m_s", speed},
+            {"window_s", {0.75, 1.5}}, {"record", {{"t_last_s", 1.5}}},
+            {"resistance_model_N", {{"mean", mean}, {"ci95", ci}, {"x", -mean}, {"y", 0.0}, {"z", 0.0},
+                                    {"blocking", {{"plateau_found", true}}}}},
+            {"lambda", lambda}, {"resistance_full_kN", mean * scale}, {"resistance_full_ci95_kN", ci * scale},
+            {"fsicr", {{"params", {{"L_m", 199.5}, {"B_m", 32.06}, {"T_m", 11.76}, {"alpha_deg", 38.06},
+                                   {"phi2_deg", 79.67}, {"A_wf_m2", 993.7}}},
+                       {"R_CH_kN", 1327.25}}},
+            {"ratio_fsicr_to_sim", 1327.25 / (mean * scale)}, {"wall_time_s", 100.0}, {"particle_steps", 5.0e7}};
+  std::ofstream(run_dir / "report.json") << j.dump(2);
+}
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+int run_tool(const fs::path& dir, const std::string& args) {
+  const std::string cmd = fmt::format("'{}' {} > '{}' 2>&1", BRASH_STUDY_REPORT_EXE, args, (dir / "tool.log").string());
+  return std::system(cmd.c_str());
+}
+
+constexpr const char* kHeader = "id\tgroup\tlabel\tparam\tvalue\tbaseline\tbase_case\texit_code\trun_dir\tcommand\n";
+
+}  // namespace
+
+TEST(StudyReport, ExponentFitIsExactOnPowerLaw) {
+  const fs::path d = fresh_dir("fit");
+  const double a = 40.0, n_am = 1.37, n_drag = 0.82;
+  std::string m = kHeader;
+  int i = 0;
+  for (double u : {0.2, 0.4, 0.7, 1.0}) {
+    for (auto [model, n] : {std::pair{"added_mass", n_am}, std::pair{"drag", n_drag}}) {
+      const std::string rd = fmt::format("runs/s{}", ++i);
+      write_report(d / rd, "liggghts", model, u, a * std::pow(u, n), 0.1);
+      m += fmt::format("s{}\tspeed\tU {}\tspeed_m_s\t{}\t0\tjbc_bench\t0\t{}\tbrash-liggghts-run case_{} --model {}\n", i,
+                       u, u, rd, i, model);
+    }
+  }
+  std::ofstream(d / "manifest.tsv") << m;
+  ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --summary-json '{}'", (d / "manifest.tsv").string(),
+                                    (d / "study.md").string(), (d / "summary.json").string())),
+            0)
+      << read(d / "tool.log");
+  const json s = json::parse(read(d / "summary.json"));
+  ASSERT_EQ(s["fits"].size(), 2u);
+  for (const auto& f : s["fits"]) {
+    const double n = f["fluid_model"] == "added_mass" ? n_am : n_drag;
+    EXPECT_EQ(f["points"], 4);
+    EXPECT_NEAR(f["n"].get<double>(), n, 1e-12);
+    EXPECT_NEAR(f["n_se"].get<double>(), 0.0, 1e-9);
+    EXPECT_NEAR(f["a"].get<double>(), a, 1e-9);
+  }
+  EXPECT_EQ(s["failed"], 0);
+  const std::string md = read(d / "study.md");
+  EXPECT_NE(md.find("## (b) Speed sweep"), std::string::npos);
+  EXPECT_NE(md.find("1.370 ± 0.000"), std::string::npos) << md;
+  EXPECT_NE(md.find("0.820 ± 0.000"), std::string::npos);
+  EXPECT_NE(md.find("brash-liggghts-run case_3 --model added_mass"), std::string::npos);  // command of the run
+  if (std::system("command -v gnuplot > /dev/null 2>&1") == 0) {
+    EXPECT_TRUE(fs::exists(d / "study_speed.png"));
+    EXPECT_NE(md.find("![speed sweep](study_speed.png)"), std::string::npos);
+  }
+}
+
+TEST(StudyReport, TablesCarryValuesAndFailuresAreReported) {
+  const fs::path d = fresh_dir("tables");
+  write_report(d / "runs/am", "liggghts", "added_mass", 0.482, 12.5, 1.5);
+  write_report(d / "runs/drag", "liggghts", "drag", 0.482, 10.0, 1.0);
+  write_report(d / "runs/ode", "ode", "added_mass", 0.482, 14.25, 2.0);
+  write_report(d / "runs/fric", "liggghts", "added_mass", 0.482, 20.0, 1.5);
+  write_report(d / "runs/broken", "liggghts", "added_mass", 0.482, 3.0, 1.0, "failed");
+  std::string m = kHeader;
+  m += "p1\tpaper\tbaseline am\t\t\t1\tjbc_bench\t0\truns/am\tbrash-liggghts-run am\n";
+  m += "p2\tpaper\tbaseline drag\t\t\t1\tjbc_bench\t0\truns/drag\tbrash-liggghts-run drag\n";
+  m += "e1\tengine\tode am\t\t\t0\tjbc_bench\t0\truns/ode\tbrash-ode am\n";
+  m += "f0\tfriction_ice\tmu 1.35\tfriction.ice_ice\t1.35\t1\tjbc_bench\t0\truns/am\tbrash-liggghts-run am\n";
+  m += "f1\tfriction_ice\tmu 0.5\tfriction.ice_ice\t0.5\t0\tjbc_bench\t0\truns/fric\tbrash-liggghts-run fric\n";
+  m += "d1\tdensity_ice\trho 850\tice.density_kg_m3\t850\t0\tjbc_bench\t0\truns/broken\tbrash-liggghts-run broken\n";
+  m += "d2\tdensity_ice\trho 950\tice.density_kg_m3\t950\t0\tjbc_bench\t0\truns/never_ran\tbrash-liggghts-run never\n";
+  m += "c1\tca\tCa text\tfluid.ca_table\ttext\t0\tjbc_bench\t137\t\tbrash-liggghts-run killed\n";
+  std::ofstream(d / "manifest.tsv") << m;
+  ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --plot none --summary-json '{}'", (d / "manifest.tsv").string(),
+                                    (d / "study.md").string(), (d / "summary.json").string())),
+            0)
+      << read(d / "tool.log");
+  const std::string md = read(d / "study.md");
+  // (a) paper table: values, paper numbers, reduced-case labels, added mass vs drag +25 %.
+  EXPECT_NE(md.find("## (a) Paper comparison"), std::string::npos);
+  EXPECT_NE(md.find("12.50 ± 1.50"), std::string::npos) << md;
+  EXPECT_NE(md.find("10.00 ± 1.00"), std::string::npos);
+  EXPECT_NE(md.find("No completed run of the paper case"), std::string::npos);
+  EXPECT_NE(md.find("**reduced case**"), std::string::npos);
+  EXPECT_NE(md.find("| 393 |"), std::string::npos);
+  EXPECT_NE(md.find("| 378 |"), std::string::npos);
+  EXPECT_NE(md.find("| 1327 |"), std::string::npos);
+  EXPECT_NE(md.find("+25.0 %"), std::string::npos);
+  // (c) sensitivity: delta vs baseline and delta / combined CI = 7.5 / sqrt(2 * 1.5^2) = 3.54.
+  EXPECT_NE(md.find("### friction_ice"), std::string::npos);
+  EXPECT_NE(md.find("+7.50 (+60.0 %)"), std::string::npos);
+  EXPECT_NE(md.find("+3.54"), std::string::npos);
+  // (d) engine table with both engines.
+  EXPECT_NE(md.find("## (d) Engines"), std::string::npos);
+  EXPECT_NE(md.find("14.25 ± 2.00"), std::string::npos);
+  // failures: status failed, missing report, runner exit code; all listed.
+  EXPECT_NE(md.find("run status 'failed'"), std::string::npos);
+  EXPECT_NE(md.find("no report.json"), std::string::npos);
+  EXPECT_NE(md.find("runner exited with code 137"), std::string::npos);
+  EXPECT_NE(md.find("**3 of 7 run(s) have no usable result.**"), std::string::npos) << md;
+  const json s = json::parse(read(d / "summary.json"));
+  EXPECT_EQ(s["failed"], 3);
+  EXPECT_EQ(s["runs"].size(), 7u);
+}
+
+TEST(StudyReport, BadManifestIsAnError) {
+  const fs::path d = fresh_dir("bad");
+  std::ofstream(d / "manifest.tsv") << "group\trun_dir\n";  // no command column
+  EXPECT_NE(run_tool(d, fmt::format("'{}' --out '{}'", (d / "manifest.tsv").string(), (d / "study.md").string())), 0);
+  EXPECT_NE(read(d / "tool.log").find("command"), std::string::npos);
+  EXPECT_NE(run_tool(d, fmt::format("'{}' --out '{}'", (d / "nothing.tsv").string(), (d / "study.md").string())), 0);
+}
