@@ -14,11 +14,15 @@
 
 namespace brash::run {
 
-void write_atomic(const std::filesystem::path& file, const std::string& content) {
-  const auto tmp = file.parent_path() / (file.filename().string() + fmt::format(".tmp{}", ::getpid()));
+std::filesystem::path temp_path_for(const std::filesystem::path& file) {
+  return file.parent_path() / fmt::format(".{}.tmp{}", file.filename().string(), ::getpid());
+}
+
+void write_atomic(const std::filesystem::path& file, std::string_view content) {
+  const auto tmp = temp_path_for(file);
   {
-    std::ofstream out(tmp, std::ios::binary);
-    out << content;
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    out.write(content.data(), static_cast<std::streamsize>(content.size()));
     out.flush();
     if (!out) throw InputError(fmt::format("{}: cannot write (disk full or no permission?)", tmp.string()));
   }

@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include <brash/error.hpp>
-#include <brash/post/atomic_write.hpp>
+#include <brash/run_layout.hpp>
 #include <brash/post/fsicr.hpp>
 #include <brash/post/particles.hpp>
 #include <brash/post/plots.hpp>
@@ -77,10 +77,10 @@ int run_report(const fs::path& run_dir, const ReportOptions& opt) {
 #endif
   auto j = report_json(a);
   j["outputs"] = outputs;
-  write_file_atomic(run_dir / "report.json", j.dump(2) + "\n");
-  write_file_atomic(run_dir / "report.md", report_markdown(a));
-  write_file_atomic(run_dir / "force_history.csv", force_history_csv(a));
-  write_file_atomic(run_dir / "blocking.csv", blocking_csv(a.resistance));
+  brash::run::write_atomic(run_dir / "report.json", j.dump(2) + "\n");
+  brash::run::write_atomic(run_dir / "report.md", report_markdown(a));
+  brash::run::write_atomic(run_dir / "force_history.csv", force_history_csv(a));
+  brash::run::write_atomic(run_dir / "blocking.csv", blocking_csv(a.resistance));
   fmt::print("{}: resistance {:.4f} ± {:.4f} N model, {:.1f} ± {:.1f} kN full scale",
              run_dir.string(), a.resistance.mean, a.resistance.ci95, a.resistance_full_kN, a.resistance_full_ci95_kN);
   if (a.fsicr.result) fmt::print("; FSICR R_CH {:.1f} kN", a.fsicr.result->R_CH_N / 1000);
@@ -95,8 +95,8 @@ int run_compare(const std::vector<fs::path>& runs, const fs::path& out) {
   for (const auto& r : runs) rows.push_back(compare_row(analyze_run(r)));
   fs::create_directories(out);
   const auto md = compare_markdown(rows);
-  write_file_atomic(out / "compare.md", md);
-  write_file_atomic(out / "compare.csv", compare_csv(rows));
+  brash::run::write_atomic(out / "compare.md", md);
+  brash::run::write_atomic(out / "compare.csv", compare_csv(rows));
   plot_compare(rows, out, out / "post");
   fmt::print("{}", md);
   fmt::print("wrote {}, {}, {}\n", (out / "compare.md").string(), (out / "compare.csv").string(), (out / "compare.png").string());

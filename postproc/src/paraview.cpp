@@ -13,7 +13,7 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
-#include <brash/post/atomic_write.hpp>
+#include <brash/run_layout.hpp>
 #ifdef BRASH_POST_HAVE_HULL
 #include <brash/hull/mesh.hpp>
 #endif
@@ -31,7 +31,7 @@ vtkNew<vtkDoubleArray> array(const char* name, int comps, std::size_t n) {
 }
 
 void write_grid(vtkUnstructuredGrid* grid, const fs::path& path) {
-  const auto tmp = temp_path_for(path);
+  const auto tmp = brash::run::temp_path_for(path);
   vtkNew<vtkXMLUnstructuredGridWriter> w;
   w->SetFileName(tmp.string().c_str());
   w->SetInputData(grid);
@@ -141,10 +141,10 @@ ParaviewOutput write_paraview(const fs::path& run_dir, const std::vector<Snapsho
   }
   out.snapshots = parts.size();
   out.particles_pvd = run_dir / "particles.pvd";
-  write_file_atomic(out.particles_pvd, pvd_text(parts));
+  brash::run::write_atomic(out.particles_pvd, pvd_text(parts));
   if (hull) {
     out.hull_pvd = run_dir / "hull.pvd";
-    write_file_atomic(out.hull_pvd, pvd_text(hulls));
+    brash::run::write_atomic(out.hull_pvd, pvd_text(hulls));
   }
   return out;
 }

@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include <brash/post/atomic_write.hpp>
+#include <brash/run_layout.hpp>
 #include <brash/post/csv.hpp>
 
 namespace brash::post {
@@ -28,9 +28,9 @@ std::string q(const fs::path& p) {
 fs::path render(const fs::path& png, const fs::path& work_dir, const std::string& name, const std::string& body,
                 int width_px, int height_px) {
   fs::create_directories(work_dir);
-  const auto tmp = temp_path_for(png);
+  const auto tmp = brash::run::temp_path_for(png);
   const auto script = work_dir / (name + ".gp");
-  write_file_atomic(script, fmt::format("set terminal pngcairo size {},{} font 'Sans,11' noenhanced\nset output {}\n{}\nunset output\n",
+  brash::run::write_atomic(script, fmt::format("set terminal pngcairo size {},{} font 'Sans,11' noenhanced\nset output {}\n{}\nunset output\n",
                                         width_px, height_px, q(tmp), body));
   run_gnuplot(script);
   fs::rename(tmp, png);
@@ -56,7 +56,7 @@ void run_gnuplot(const fs::path& script) {
 fs::path plot_force_history(const RunAnalysis& a, const fs::path& out_dir, const fs::path& work_dir) {
   fs::create_directories(work_dir);
   const auto data = work_dir / "force_history.csv";
-  write_file_atomic(data, force_history_csv(a));
+  brash::run::write_atomic(data, force_history_csv(a));
   const auto& w = a.window.used_s;
   const std::string body = fmt::format(R"(set datafile separator ','
 set title 'Force of the ice on the hull ({} / {}), model scale; shaded: averaging window [{:.2f}, {:.2f}] s'
@@ -86,7 +86,7 @@ fs::path plot_resistance_bars(const RunAnalysis& a, const fs::path& out_dir, con
   d += fmt::format("1 \"FSICR R_CH\\n(ours, {})\" {} 0 1\n", a.fsicr.ice_class, std::isnan(rch) ? 0.0 : rch);
   d += fmt::format("2 \"paper simulation\\n({})\" {} 0 2\n", a.meta.fluid_model == "drag" ? "drag" : "added mass", paper_sim);
   d += fmt::format("3 \"paper FSICR\" {} 0 2\n", PaperValues::fsicr_R_CH_kN);
-  write_file_atomic(data, d);
+  brash::run::write_atomic(data, d);
   const std::string ratio = a.ratio_fsicr_to_sim ? fmt::format("FSICR / simulation = {:.2f} (paper 2.54)", *a.ratio_fsicr_to_sim) : "R_CH not available";
   const std::string body = fmt::format(R"(set title 'Full-scale channel resistance (lambda = {}): {}'
 set ylabel 'resistance [kN]'
@@ -125,7 +125,7 @@ fs::path plot_ice_views(const Snapshot& s, const SnapshotEntry& e, const PostCas
       const double v = top ? std::sqrt(s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]) : s.submerged_fraction[i];
       d += fmt::format("{} {} {} {}\n", s.x[i], s.y[i], s.radius[i], v);
     }
-    write_file_atomic(p, d);
+    brash::run::write_atomic(p, d);
   };
   const auto top = work_dir / fmt::format("ice_top_{}.dat", e.step);
   const auto bottom = work_dir / fmt::format("ice_bottom_{}.dat", e.step);
@@ -201,7 +201,7 @@ fs::path plot_compare(const std::vector<CompareRow>& rows, const fs::path& out_d
     d += fmt::format("{} \"{}\\n{} {:.3f} m/s{}\" {} {} {}\n", i, r.engine, r.fluid_model, r.speed_m_s, r.complete ? "" : "\\n(incomplete)",
                      r.full_kN, r.full_ci95_kN, std::isnan(r.R_CH_kN) ? 0.0 : r.R_CH_kN);
   }
-  write_file_atomic(data, d);
+  brash::run::write_atomic(data, d);
   const std::string body = fmt::format(R"(set title 'Full-scale ice resistance per run (bars, 95 % CI) and FSICR R_CH (points)'
 set ylabel 'resistance [kN]'
 set yrange [0:*]

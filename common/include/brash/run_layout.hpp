@@ -3,6 +3,7 @@
 #pragma once
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -10,7 +11,12 @@ namespace brash::run {
 
 // Writes `content` to `file` through a temporary file in the same folder and a rename, so a reader
 // never sees a half-written file.
-void write_atomic(const std::filesystem::path& file, const std::string& content);
+void write_atomic(const std::filesystem::path& file, std::string_view content);
+
+// The temporary name write_atomic uses for `file` (hidden, same folder so the rename is atomic, with the
+// pid so that two processes writing one run do not clobber each other). For writers that need a path
+// (VTK, gnuplot): write there, then rename.
+std::filesystem::path temp_path_for(const std::filesystem::path& file);
 
 // runs/<case>-<engine>-<model>-<UTC stamp>, created with particles/ and restart/ inside.
 std::filesystem::path make_run_dir(const std::filesystem::path& runs_root, const std::string& case_name,
