@@ -13,7 +13,7 @@ DEB_PACKAGES := g++ make cmake ninja-build pkg-config \
   clang libclang-rt-14-dev \
   yade pybind11-dev python3-dev
 
-.PHONY: deps build test run bench clean
+.PHONY: deps build test run bench study clean
 
 deps:
 	@missing=""; for p in $(DEB_PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
@@ -38,6 +38,12 @@ run: build
 
 bench: build
 	./scripts/brash-bench
+
+# The study of issue 11 -> docs/study.md (STUDY=full: paper case + sweeps, days; short: sweeps on
+# jbc_bench, ~1 h; smoke: 3 tiny runs). STUDY_DOC / STUDY_WORK redirect the document and the work dir.
+STUDY ?= full
+study: build
+	STUDY=$(STUDY) ./scripts/brash-study
 
 clean:
 	rm -rf $(BUILD_DIR)

@@ -281,6 +281,16 @@ void build(Study& s) {
   }
 }
 
+// Run directories are shown relative to the working directory when they lie below it (repo-relative
+// paths when the study is generated from the repository root).
+std::string show_path(const fs::path& p) {
+  if (p.empty()) return "";
+  std::error_code ec;
+  const fs::path rel = fs::relative(p, fs::current_path(), ec);
+  if (!ec && !rel.empty() && *rel.begin() != "..") return rel.string();
+  return p.string();
+}
+
 std::string md_escape(std::string s) {
   std::string o;
   for (char c : s) {
@@ -304,7 +314,7 @@ void section_failures(const Study& s, std::string& md) {
                     "their reason, never dropped.\n\n| run | run dir | reason |\n|---|---|---|\n",
                     bad.size(), s.order.size());
   for (const Run* r : bad)
-    md += fmt::format("| {} | `{}` | {} |\n", r->ref, r->run_dir.string(), md_escape(r->problem));
+    md += fmt::format("| {} | `{}` | {} |\n", r->ref, show_path(r->run_dir), md_escape(r->problem));
   md += "\n";
 }
 
@@ -463,10 +473,12 @@ void section_speed(Study& s, std::string& md, const fs::path& plot_png, json& su
     p << "\n";
   }
   const int rc = std::system(fmt::format("gnuplot '{}' 2>'{}.err'", gp.string(), gp.string()).c_str());
-  if (rc == 0 && fs::exists(plot_png))
+  if (rc == 0 && fs::exists(plot_png)) {
+    std::error_code ec;
+    if (fs::file_size(gp.string() + ".err", ec) == 0 && !ec) fs::remove(gp.string() + ".err", ec);
     md += fmt::format("![speed sweep]({})\n\nPlot: `{}` (data `{}`, script `{}`).\n\n", plot_png.filename().string(),
                       plot_png.filename().string(), dat.filename().string(), gp.filename().string());
-  else
+  } else
     md += fmt::format("Plot not produced: `gnuplot {}` failed (exit {}); see `{}.err`.\n\n", gp.string(), rc, gp.string());
 }
 
@@ -562,7 +574,7 @@ void section_runs(Study& s, std::string& md) {
         "| run | run dir | case | engine | fluid model | status | command |\n|---|---|---|---|---|---|---|\n";
   for (const auto& k : s.order) {
     const Run& r = s.runs.at(k);
-    md += fmt::format("| {} | `{}` | {} | {} | {} | {} | `{}` |\n", r.ref, r.run_dir.string(), r.case_name, r.engine,
+    md += fmt::format("| {} | `{}` | {} | {} | {} | {} | `{}` |\n", r.ref, show_path(r.run_dir), r.case_name, r.engine,
                       r.model, status_cell(r), md_escape(r.command));
   }
   md += "\n";
