@@ -37,8 +37,9 @@ ir_fix=$(callgrind_annotate --inclusive=yes "cg_with.out" 2>/dev/null | awk '/Fi
 awk -v a="$ir_without" -v b="$ir_with" -v f="${ir_fix:-0}" -v n="$atoms" -v s="$steps_cg" 'BEGIN{
   printf "instructions bare        %.4g\n", a;
   printf "instructions with fix    %.4g\n", b;
-  printf "ratio with/bare          %.4f  (goal <= 1.03)\n", b/a;
+  printf "ratio with/bare          %.4f  (the bare run has no buoyancy: its spheres sink, so its contacts differ)\n", b/a;
   printf "post_force inclusive     %.4g = %.2f %% of the run, %.1f instructions per sphere-step\n", f, 100*f/b, f/(n*s);
+  printf "plugin overhead          %.2f %% = fix instructions / all other instructions of the same run (goal <= 3 %%)\n", 100*f/(b-f);
 }'
 
 echo "== throughput ($steps_tp steps)"
