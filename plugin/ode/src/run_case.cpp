@@ -384,6 +384,8 @@ RunResult run_case(const RunOptions& cli_options) {
       win_n = r.get<long>();
       wall_before = r.get<double>();
       w.load_state(r);
+      if (w.restore_inexact())
+        logln(fmt::format("resume: {} sphere quaternions restored within a few ulps, not bit for bit", w.restore_inexact()));
       const double t_r = double(k0) * st.dt_s;
       // Outputs: keep only what was written up to the restart point.
       std::istringstream in(read_text(run_dir / "hull_force.csv"));
@@ -404,7 +406,8 @@ RunResult run_case(const RunOptions& cli_options) {
       while (std::getline(ix, line))
         if (!line.empty() && std::stol(line.substr(0, line.find(','))) <= k0) index += line + "\n";
       meta["resumes"].push_back({{"from_file", found.file.filename().string()}, {"step", k0}, {"t_s", t_r},
-                                 {"rejected", found.rejected}, {"hull_force_rows_dropped", dropped}});
+                                 {"rejected", found.rejected}, {"hull_force_rows_dropped", dropped},
+                                 {"quaternions_inexact", w.restore_inexact()}});
       logln(fmt::format("resumed from {} at step {} (t = {} s): kept {} hull force rows, dropped {} later ones",
                         found.file.string(), k0, t_r, kept, dropped));
     }

@@ -107,6 +107,8 @@ class World {
   // Not restored: ODE's auto-disable averaging buffers (with --auto-disable a resume is not bit-exact).
   void save_state(restart::Writer& w) const;
   void load_state(restart::Reader& r);
+  // Spheres whose saved quaternion could not be given back bit for bit by the last load_state (see world.cpp).
+  std::size_t restore_inexact() const { return restore_inexact_; }
 
   // Extra ODE velocity damping on every sphere (per-step scale factors, threshold 0), for preparing a bed
   // at rest (settling); set (0, angular_damping) back before the measured run. Not a physical force.
@@ -187,6 +189,7 @@ class World {
   std::size_t hull_contacts_ = 0;
   std::size_t contacts_this_step_ = 0;
   Stats stats_;
+  std::size_t restore_inexact_ = 0;
 };
 
 // dInitODE2 / dCloseODE once per process (RAII); also checks double precision.
