@@ -380,7 +380,7 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
   {  // speedups (docs/performance.md)
     const auto s = r.section(root, "speedups",
                              {"farfield", "farfield_ahead_m", "farfield_behind_m", "farfield_every_steps",
-                              "symmetry_y", "neighbor_skin_d"});
+                              "symmetry_y", "neighbor_skin_d", "early_stop_rel_ci"});
     r.boolean(s, "speedups", "farfield", c.speedups.farfield);
     r.num(s, "speedups", "farfield_ahead_m", c.speedups.farfield_ahead_m, non_negative, ">= 0");
     r.num(s, "speedups", "farfield_behind_m", c.speedups.farfield_behind_m, non_negative, ">= 0");
@@ -391,6 +391,8 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
     r.boolean(s, "speedups", "symmetry_y", c.speedups.symmetry_y);
     r.num(s, "speedups", "neighbor_skin_d", c.speedups.neighbor_skin_d,
           [](double k) { return k > 0 && k <= 2; }, "in (0, 2]");
+    r.num(s, "speedups", "early_stop_rel_ci", c.speedups.early_stop_rel_ci,
+          [](double f) { return f >= 0 && f < 1; }, "in [0, 1) (0 = off)");
     // Ice is disturbed up to a few diameters ahead of the bow; an idle zone that starts closer
     // would stop pieces the bow is already pushing.
     if (c.speedups.farfield && c.speedups.farfield_ahead_m < 2 * c.ice.diameter_mean_m)
@@ -525,6 +527,7 @@ std::string dump_case_yaml(const Case& c) {
   line("  ", "farfield_every_steps", fmt::format("{}", c.speedups.farfield_every_steps));
   line("  ", "symmetry_y", c.speedups.symmetry_y ? "true" : "false");
   line("  ", "neighbor_skin_d", num(c.speedups.neighbor_skin_d));
+  line("  ", "early_stop_rel_ci", num(c.speedups.early_stop_rel_ci));
   return o;
 }
 

@@ -1,3 +1,5 @@
+// Runner behaviours on a small case: kill -9 and resume; early stop on the confidence interval.
+//
 // kill -9 and resume: a small case is run uninterrupted, and again killed (the whole process group,
 // engine included) after its second periodic restart, then continued with `brash-liggghts-run --resume`.
 // Before the restart point the hull force is identical; after it the DEM trajectory is not bit-exact
@@ -49,9 +51,10 @@ std::string run_cmd(const fs::path& case_dir, const fs::path& out) {
 }
 }  // namespace
 
-TEST(LiggghtsResume, KilledRunResumesToTheSameResult) {
-  const fs::path dir = brash::test::fresh_dir("resume");
-  // The quick case, narrowed and shortened: the stem starts 5 cm before the ice, 0.6 s.
+namespace {
+// The quick case, narrowed and shortened: the stem starts 5 cm before the ice, 0.6 s.
+void write_small_case(const fs::path& case_dir, const std::string& window, const std::string& output_interval,
+                      const std::string& extra) {
   std::string yaml = brash::test::read_text(fs::path(BRASH_SOURCE_DIR) / "cases/jbc_quick/case.yaml");
   auto set = [&](const std::string& key, const std::string& value) {
     yaml = std::regex_replace(yaml, std::regex("\n  " + key + ":[^\n]*"), "\n  " + key + ": " + value);
@@ -60,10 +63,35 @@ TEST(LiggghtsResume, KilledRunResumesToTheSameResult) {
   set("width_m", "1.3");
   set("start_x_m", "-7.05");
   set("duration_s", "0.6");
-  set("window_s", "[0.2, 0.6]");
+  set("window_s", window);
+  set("output_interval_s", output_interval);
   set("dump_interval_s", "0.1");
-  fs::create_directories(dir / "case");
-  std::ofstream(dir / "case/case.yaml") << yaml;
+  fs::create_directories(case_dir);
+  std::ofstream(case_dir / "case.yaml") << yaml << extra;
+}
+}  // namespace
+
+TEST(LiggghtsRunner, EarlyStopWhenTheConfidenceIntervalIsSmallEnough) {
+  const fs::path dir = brash::test::fresh_dir("earlystop");
+  // A loose threshold (50 % of the mean) so that the short run meets it: checked from 0.1 + 0.4 * 0.5 s on.
+  write_small_case(dir / "case", "[0.1, 0.6]", "0.002", "speedups:\n  early_stop_rel_ci: 0.5\n");
+  ASSERT_EQ(std::system((run_cmd(dir / "case", dir / "run") + " > '" + (dir / "run.log").string() + "' 2>&1").c_str()), 0);
+  const std::string meta = brash::test::read_text(dir / "run/meta.json");
+  EXPECT_NE(meta.find("\"complete\""), std::string::npos);
+  ASSERT_NE(meta.find("\"early_stop\""), std::string::npos) << meta;
+  const auto rows = read_force(dir / "run/hull_force.csv");
+  ASSERT_FALSE(rows.empty());
+  EXPECT_GE(rows.back().t, 0.3 - 1e-9);  // not before the check starts
+  EXPECT_LT(rows.back().t, 0.55);         // well before the requested end
+  // the run's resolved case ends at the stop, so the report's window does too
+  const std::string yaml = brash::test::read_text(dir / "run/case.yaml");
+  EXPECT_EQ(yaml.find("duration_s: 0.6\n"), std::string::npos) << yaml;
+  fs::remove_all(dir);
+}
+
+TEST(LiggghtsResume, KilledRunResumesToTheSameResult) {
+  const fs::path dir = brash::test::fresh_dir("resume");
+  write_small_case(dir / "case", "[0.2, 0.6]", "0.01", "");
 
   ASSERT_EQ(std::system((run_cmd(dir / "case", dir / "full") + " > '" + (dir / "full.log").string() + "' 2>&1").c_str()), 0);
 

@@ -117,6 +117,8 @@ struct SpeedupSpec {
   int farfield_every_steps = 100;       // membership update period [steps]
   bool symmetry_y = false;              // half channel y >= 0, frictionless wall at y = 0, forces x 2
   double neighbor_skin_d = 0.2;         // neighbour-list skin in mean sphere diameters
+  double early_stop_rel_ci = 0;         // stop once the 95 % CI of the window mean is below this fraction of
+                                        // the mean (checked from window start + 40 % of the window); 0 = off
   bool operator==(const SpeedupSpec&) const = default;
 };
 

@@ -10,9 +10,11 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <csignal>
 #include <unistd.h>
 
 #include "brash/case.hpp"
+#include "brash/post/blocking.hpp"
 #include "brash/error.hpp"
 #include "brash/hull/mesh.hpp"
 #include "brash/packing.hpp"
@@ -129,6 +131,29 @@ std::size_t convert_dumps(const fs::path& run_dir, const brash::Case& c) {
   return dumps.size();
 }
 
+// Early stop (speedups.early_stop_rel_ci): the windowed mean resistance is known well enough.
+struct EarlyStop {
+  double rel_ci = 0;            // stop when ci95 < rel_ci * |mean| (0 = off)
+  double t0 = 0, t1 = 0;        // averaging window
+  bool stopped = false;
+  double t_stop = 0, mean = 0, ci95 = 0;
+};
+
+// Resistance samples (-fx) with t >= t0 from the (growing) raw hull-force file.
+std::vector<double> resistance_since(const fs::path& raw, double t0) {
+  std::vector<double> r;
+  std::ifstream in(raw);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream ss(line);
+    long step;
+    double t, fx, fy, fz;
+    if ((ss >> step >> t >> fx >> fy >> fz) && t >= t0) r.push_back(-fx);
+  }
+  return r;
+}
+
 struct EngineResult {
   int exit_code = 0;
   double loop_time_s = 0;
@@ -138,8 +163,10 @@ struct EngineResult {
 };
 
 // Runs the engine, copies its screen output to log.txt and prints progress with an ETA.
-EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, const std::string& input = "in.lmp") {
-  std::string cmd = "cd " + brash::run::shell_quote(run_dir) + " && ";
+EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, const std::string& input = "in.lmp",
+                        EarlyStop* early = nullptr) {
+  // exec: the shell's pid becomes the engine's (mpirun's), so an early stop can signal it
+  std::string cmd = "cd " + brash::run::shell_quote(run_dir) + " && echo $$ > engine.pid && exec ";
   if (ranks > 1) cmd += fmt::format("mpirun --allow-run-as-root --oversubscribe -np {} ", ranks);
   cmd += brash::run::shell_quote(brash::run::executable_dir() / "brash-liggghts") + " -in " + input + " -log none 2>&1";
   EngineResult res;
@@ -166,6 +193,18 @@ EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, c
     if (std::sscanf(line.c_str(), " %ld %lf", &step, &t) == 2) {
       const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       if (t_first < 0) t_first = t;  // a resumed run starts at its restart time
+      if (early && early->rel_ci > 0 && !early->stopped && t >= early->t0 + 0.4 * (early->t1 - early->t0)) {
+        const auto r = resistance_since(run_dir / "hull_force.raw", early->t0);
+        const auto b = brash::post::block_average(r);
+        if (r.size() >= 64 && b.plateau_found && b.ci95 < early->rel_ci * std::abs(b.mean)) {
+          early->stopped = true, early->t_stop = t, early->mean = b.mean, early->ci95 = b.ci95;
+          std::ifstream pidf(run_dir / "engine.pid");
+          long pid = 0;
+          if (pidf >> pid && pid > 0) ::kill(static_cast<pid_t>(pid), SIGTERM);
+          std::fprintf(stderr, "\n[brash-liggghts] early stop at t = %.3f s: window mean %.4g N, 95 %% CI +-%.3g N "
+                       "(%.2f %% < %.2f %%)\n", t, b.mean, b.ci95, 100 * b.ci95 / std::abs(b.mean), 100 * early->rel_ci);
+        }
+      }
       if (elapsed - last_print >= 2.0 && t > t_first) {
         last_print = elapsed;
         const double eta = elapsed * (duration_s - t) / (t - t_first);
@@ -296,8 +335,9 @@ int main(int argc, char** argv) {
 
     const auto t0 = std::chrono::steady_clock::now();
     EngineResult res;
+    EarlyStop early{c.speedups.early_stop_rel_ci, c.run.window_s[0], c.run.window_s[1]};
     if (!resume) {
-      res = run_engine(run_dir, ranks, run_duration);
+      res = run_engine(run_dir, ranks, run_duration, "in.lmp", &early);
     } else {
       // Keep what the killed attempt wrote; the resumed run re-emits rows from its restart step on.
       if (fs::exists(run_dir / "hull_force.raw"))
@@ -320,6 +360,19 @@ int main(int argc, char** argv) {
     meta["loop_time_s"] = res.loop_time_s;
     meta["particle_steps"] = static_cast<double>(res.atoms) * static_cast<double>(res.steps);
     meta["hull_force_rows"] = rows;
+    if (early.stopped) {
+      // The run ends at the stop: the resolved case says so, the window ends there, meta records why.
+      brash::Case stopped = c;
+      stopped.run.duration_s = early.t_stop;
+      stopped.run.window_s[1] = early.t_stop;
+      brash::run::write_atomic(run_dir / "case.yaml", brash::dump_case_yaml(stopped));
+      meta["early_stop"] = {{"t_s", early.t_stop},          {"requested_duration_s", run_duration},
+                            {"rel_ci_threshold", early.rel_ci}, {"mean_N", early.mean},
+                            {"ci95_N", early.ci95}};
+      res.exit_code = 0;
+      res.error.clear();
+      meta["particle_steps"] = static_cast<double>(spheres.size()) * std::round(early.t_stop / c.run.timestep_s);
+    }
     if (res.exit_code != 0 || !res.error.empty()) {
       meta["status"] = "failed";
       meta["reason"] = res.error.empty() ? fmt::format("LIGGGHTS exited with code {}", res.exit_code) : res.error;
