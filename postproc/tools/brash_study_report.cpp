@@ -37,7 +37,7 @@ namespace {
 constexpr double kPaperRatio = 2.54;
 
 struct Row {  // one manifest row
-  std::string id, group, label, param, value, base_case, command;
+  std::string id, group, label, param, value, base_case, command, exit_text;
   bool baseline = false;
   std::optional<int> exit_code;
   fs::path run_dir;
@@ -48,6 +48,7 @@ struct Run {  // one run directory (several rows may share it)
   fs::path run_dir;
   std::string command, base_case;
   std::optional<int> exit_code;
+  std::string exit_text;
   bool ok = false;
   std::string problem;  // why the run is not usable (missing, failed, ...)
   std::vector<std::string> warnings;
@@ -80,7 +81,7 @@ std::vector<Row> read_manifest(const fs::path& path) {
   std::vector<std::string> header;
   std::vector<Row> rows;
   std::string line;
-  int lineno = 0;
+  int lineno = 0;  // for messages
   const fs::path base = fs::absolute(path).parent_path();
   while (std::getline(in, line)) {
     ++lineno;
@@ -104,11 +105,16 @@ std::vector<Row> read_manifest(const fs::path& path) {
     r.base_case = m["base_case"];
     r.command = m["command"];
     r.baseline = m["baseline"] == "1" || m["baseline"] == "yes" || m["baseline"] == "true";
-    if (!m["exit_code"].empty()) {
+    if (!m["exit_code"].empty()) {  // an integer, or a text saying why nothing ran ("not run", ...)
+      std::size_t used = 0;
       try {
-        r.exit_code = std::stoi(m["exit_code"]);
+        r.exit_code = std::stoi(m["exit_code"], &used);
       } catch (const std::exception&) {
-        throw std::runtime_error(fmt::format("{}:{}: exit_code '{}' is not an integer", path.string(), lineno, m["exit_code"]));
+        used = 0;
+      }
+      if (used != m["exit_code"].size()) {
+        r.exit_code.reset();
+        r.exit_text = m["exit_code"];
       }
     }
     if (r.group.empty()) throw std::runtime_error(fmt::format("{}:{}: empty group", path.string(), lineno));
@@ -134,6 +140,7 @@ std::optional<T> opt(const json& j, const json::json_pointer& p) {
 
 void load_report(Run& r) {
   if (r.exit_code && *r.exit_code != 0) r.problem = fmt::format("runner exited with code {}", *r.exit_code);
+  if (!r.exit_text.empty()) r.problem = "runner: " + r.exit_text;
   if (r.run_dir.empty()) {
     if (r.problem.empty()) r.problem = "no run directory recorded";
     return;
@@ -271,6 +278,7 @@ void build(Study& s) {
       r.command = row.command;
       r.base_case = row.base_case;
       r.exit_code = row.exit_code;
+      r.exit_text = row.exit_text;
       load_report(r);
       s.runs.emplace(key, r);
       s.order.push_back(key);

@@ -112,6 +112,7 @@ TEST(StudyReport, TablesCarryValuesAndFailuresAreReported) {
   m += "d1\tdensity_ice\trho 850\tice.density_kg_m3\t850\t0\tjbc_bench\t0\truns/broken\tbrash-liggghts-run broken\n";
   m += "d2\tdensity_ice\trho 950\tice.density_kg_m3\t950\t0\tjbc_bench\t0\truns/never_ran\tbrash-liggghts-run never\n";
   m += "c1\tca\tCa text\tfluid.ca_table\ttext\t0\tjbc_bench\t137\t\tbrash-liggghts-run killed\n";
+  m += "c2\tca\tCa zero\tfluid.ca_table\tzero\t0\tjbc_bench\tcase generation failed\truns/c2\tbrash-case new c2\n";
   std::ofstream(d / "manifest.tsv") << m;
   ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --plot none --summary-json '{}'", (d / "manifest.tsv").string(),
                                     (d / "study.md").string(), (d / "summary.json").string())),
@@ -139,10 +140,11 @@ TEST(StudyReport, TablesCarryValuesAndFailuresAreReported) {
   EXPECT_NE(md.find("run status 'failed'"), std::string::npos);
   EXPECT_NE(md.find("no report.json"), std::string::npos);
   EXPECT_NE(md.find("runner exited with code 137"), std::string::npos);
-  EXPECT_NE(md.find("**3 of 7 run(s) have no usable result.**"), std::string::npos) << md;
+  EXPECT_NE(md.find("runner: case generation failed"), std::string::npos);
+  EXPECT_NE(md.find("**4 of 8 run(s) have no usable result.**"), std::string::npos) << md;
   const json s = json::parse(read(d / "summary.json"));
-  EXPECT_EQ(s["failed"], 3);
-  EXPECT_EQ(s["runs"].size(), 7u);
+  EXPECT_EQ(s["failed"], 4);
+  EXPECT_EQ(s["runs"].size(), 8u);
 }
 
 TEST(StudyReport, BadManifestIsAnError) {
