@@ -10,6 +10,10 @@
 namespace fs = std::filesystem;
 
 namespace {
+std::string brash_read(const fs::path& p) {
+  std::ifstream in(p);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
 nlohmann::json read_json(const fs::path& p) {
   std::ifstream in(p);
   return nlohmann::json::parse(in);
@@ -60,5 +64,14 @@ TEST(Pipeline, QuickCaseLiggghtsToReport) {
                          "assert need<=f, f; assert len(m.points)>8000; "
                          "assert m.point_data['ca'].shape[1]==3\" '" + last_vtu.string() + "'";
   EXPECT_EQ(std::system(py.c_str()), 0) << py;
+  // ... and by VTK's own XML reader (Debian's python3-vtk9), through the .pvd collection's last entry.
+  const std::string vtk_py =
+      "/usr/bin/python3 -c \"import vtk,sys; r=vtk.vtkXMLUnstructuredGridReader(); r.SetFileName(sys.argv[1]); "
+      "r.Update(); o=r.GetOutput(); pd=o.GetPointData(); names={pd.GetArrayName(i) for i in "
+      "range(pd.GetNumberOfArrays())}; assert {'radius','velocity','submerged_fraction','ca'}<=names, names; "
+      "assert o.GetNumberOfPoints()>8000; assert pd.GetArray('ca').GetNumberOfComponents()==3\" '" +
+      last_vtu.string() + "'";
+  EXPECT_EQ(std::system(vtk_py.c_str()), 0) << vtk_py;
+  EXPECT_NE(brash_read(out / "particles.pvd").find(last_vtu.filename().string()), std::string::npos);
   fs::remove_all(out);
 }
