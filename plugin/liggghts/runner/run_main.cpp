@@ -243,7 +243,7 @@ int main(int argc, char** argv) {
   app.add_flag("--prepare-only", prepare_only, "write the run directory's inputs (in.lmp, packing.data, hull.stl) and stop");
   CLI11_PARSE(app, argc, argv);
   if (case_dir.empty() && resume_dir.empty()) {
-    std::cerr << "brash-liggghts-run: error: give a case directory, or --resume RUN_DIR\n";
+    std::cerr << "brash-liggghts-run: error: case_dir (a folder with case.yaml) or --resume RUN_DIR is required\n";
     return 2;
   }
   const bool resume = !resume_dir.empty();
