@@ -14,9 +14,10 @@ Box scene_box(const Case& c, double hull_x_min_m, double hull_x_max_m, double hu
   const double d = c.ice.diameter_mean_m;
   Box b;
   b.xlo = std::min(0.0, c.hull.start_x_m + hull_x_min_m) - 10 * d;
-  // Ice pushed ahead of the bow leaves the channel end into open water: leave room for it
-  // (an atom leaving the box would be lost; thermo_modify lost error and fix brash/guard stop the run).
-  const double open_water = std::max(0.5, 0.1 * c.channel.length_m);
+  // Ice pushed ahead of the bow leaves the channel end into open water: leave room for it (an atom
+  // leaving the box would be lost; thermo_modify lost error and fix brash/guard stop the run). A packed
+  // bed is pushed ahead as a plug, at most at the ship's speed: room for the ship's whole travel.
+  const double open_water = std::max({0.5, 0.1 * c.channel.length_m, travel});
   b.xhi = std::max(c.channel.length_m + open_water, c.hull.start_x_m + hull_x_max_m + travel) + 10 * d;
   b.ylo = c.speedups.symmetry_y ? -2 * d : -0.5 * c.channel.width_m - 2 * d;
   b.yhi = 0.5 * c.channel.width_m + 2 * d;
