@@ -46,7 +46,7 @@ constexpr EnumText<Treatment> kTreatment[] = {{Treatment::Implicit, "implicit"},
                                               {Treatment::Explicit, "explicit"}};
 constexpr EnumText<DragLaw> kDragLaw[] = {{DragLaw::Constant, "constant"},
                                           {DragLaw::SchillerNaumann, "schiller_naumann"}};
-constexpr EnumText<CaTable> kCaTable[] = {{CaTable::Table1, "table1"}, {CaTable::Text, "text"}};
+constexpr EnumText<CaTable> kCaTable[] = {{CaTable::Table1, "table1"}, {CaTable::Text, "text"}, {CaTable::Zero, "zero"}};
 
 template <class E, std::size_t N>
 std::string_view text_of(const EnumText<E> (&table)[N], E v) {

@@ -49,6 +49,16 @@ TEST(Table1, TextVariantSetsTwoOnSubmergedReversal) {
   EXPECT_EQ(select_ca(t, r, at_fraction(0.5), true), Vec3(0.5, 0.5, 0.0));
 }
 
+TEST(Table1, ZeroTableHasNoAddedMassAnywhere) {  // ca_table: zero (the paper's Ca = 0 comparison)
+  const CaTable t = parse_ca_table("zero");
+  for (bool rev : {false, true}) {
+    EXPECT_EQ(select_ca(t, r, immersion(r, -2 * r, 0), rev), Vec3(0, 0, 0));
+    EXPECT_EQ(select_ca(t, r, at_fraction(0.5), rev), Vec3(0, 0, 0));
+  }
+  EXPECT_EQ(select_ca(parse_ca_table("table1"), r, immersion(r, -2 * r, 0), false), Vec3(0.5, 0.5, 0.5));
+  EXPECT_THROW(parse_ca_table("none"), brash::InputError);
+}
+
 TEST(Reversal, SignChangeOfVerticalVelocityOnly) {
   EXPECT_TRUE(motion_reversed(moving(0.1), Vec3(0, 0, -0.1)));
   EXPECT_TRUE(motion_reversed(moving(-0.1), Vec3(0, 0, 0.2)));

@@ -19,7 +19,7 @@ enum class PackingMode { Volume, StrictTwoLayer };    // YAML: volume | strict_t
 enum class FluidModel { Drag, AddedMass, Both };      // YAML: drag | added_mass | both
 enum class Treatment { Implicit, Explicit };          // YAML: implicit | explicit
 enum class DragLaw { Constant, SchillerNaumann };     // YAML: constant | schiller_naumann
-enum class CaTable { Table1, Text };                  // YAML: table1 | text
+enum class CaTable { Table1, Text, Zero };            // YAML: table1 | text | zero (Ca = 0 everywhere)
 
 // YAML spelling of each enum value (the inverse is done by the loader, with an error on unknown text).
 std::string_view to_string(IceClass v);

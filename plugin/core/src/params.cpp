@@ -69,7 +69,8 @@ DragLaw parse_drag_law(std::string_view s) {
 CaTable parse_ca_table(std::string_view s) {
   if (s == "table1") return CaTable::table1();
   if (s == "text") return CaTable::text_variant();
-  throw InputError(fmt::format("unknown added-mass table '{}' (expected table1 | text)", s));
+  if (s == "zero") return CaTable::uniform(0.0);  // the paper's "Ca = 0" comparison
+  throw InputError(fmt::format("unknown added-mass table '{}' (expected table1 | text | zero)", s));
 }
 
 std::string to_string(FluidModel m) {
