@@ -466,13 +466,13 @@ void section_speed(Study& s, std::string& md, const fs::path& plot_png, json& su
       ++block;
     }
     std::ofstream p(gp);
-    p << "set terminal pngcairo size 900,600\nset output '" << plot_png.string() << "'\n"
+    p << "set terminal pngcairo size 900,600\nset output '" << plot_png.filename().string() << "'\n"
       << "set logscale xy\nset xlabel 'ship speed U [m/s] (model scale)'\nset ylabel 'resistance R [N] (model scale)'\n"
       << "set key left top\nset grid\nset title 'Speed sweep: R = a U^n (least squares in log-log)'\nplot ";
     int i = 0;
     for (const Fit& f : fits) {
       if (i) p << ", ";
-      p << fmt::format("'{}' index {} using 1:2:3 with yerrorbars pt 7 lc {} title '{} {}'", dat.string(), i, i + 1,
+      p << fmt::format("'{}' index {} using 1:2:3 with yerrorbars pt 7 lc {} title '{} {}'", dat.filename().string(), i, i + 1,
                        f.engine, f.model);
       if (std::isfinite(f.n))
         p << fmt::format(", {} * x**{} with lines lc {} title 'fit n = {:.2f}'", f.a, f.n, i + 1, f.n);
@@ -480,7 +480,10 @@ void section_speed(Study& s, std::string& md, const fs::path& plot_png, json& su
     }
     p << "\n";
   }
-  const int rc = std::system(fmt::format("gnuplot '{}' 2>'{}.err'", gp.string(), gp.string()).c_str());
+  // file names in the script are relative to its folder (the script can be re-run there)
+  const fs::path plot_dir = fs::absolute(plot_png).parent_path();
+  const int rc = std::system(fmt::format("cd '{}' && gnuplot '{}' 2>'{}.err'", plot_dir.string(), gp.filename().string(),
+                                         gp.filename().string()).c_str());
   if (rc == 0 && fs::exists(plot_png)) {
     std::error_code ec;
     if (fs::file_size(gp.string() + ".err", ec) == 0 && !ec) fs::remove(gp.string() + ".err", ec);
