@@ -26,6 +26,15 @@ int run_shell(const std::string& command) {
   return WIFEXITED(rc) ? WEXITSTATUS(rc) : 128;
 }
 
+int run_postprocessor(const fs::path& run_dir, const std::string& tag) {
+  const auto post = executable_dir() / "brash-post";
+  if (!fs::exists(post)) {
+    std::cerr << tag << " brash-post not built; skipping the report\n";
+    return 0;
+  }
+  return run_shell(shell_quote(post) + " " + shell_quote(run_dir));
+}
+
 Case load_case_with_overrides(const fs::path& case_file, const CaseOverrides& o, const std::string& tag) {
   Case c = load_case(case_file);
   std::string yaml = dump_case_yaml(c);

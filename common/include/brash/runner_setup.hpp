@@ -22,6 +22,10 @@ Case load_case_with_overrides(const std::filesystem::path& case_file, const Case
 // and checks that the hull file exists. Throws InputError naming the case file.
 void prepare_case_inputs(const Case& c, const std::filesystem::path& case_file, const std::string& tag);
 
+// Runs brash-post (next to this executable) on a finished run; returns its exit status (0 with a note
+// when brash-post is not built).
+int run_postprocessor(const std::filesystem::path& run_dir, const std::string& tag);
+
 std::filesystem::path executable_dir();                  // folder of the running executable
 std::string shell_quote(const std::filesystem::path& p);  // '...' for /bin/sh
 int run_shell(const std::string& command);                // exit status (128 if killed by a signal)

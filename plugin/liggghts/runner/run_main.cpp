@@ -395,13 +395,5 @@ int main(int argc, char** argv) {
     return 1;
   }
   std::cout << run_dir.string() << "\n";
-  if (!no_post) {
-    const auto post = brash::run::executable_dir() / "brash-post";
-    if (!fs::exists(post)) {
-      std::cerr << "[brash-liggghts] brash-post not built; skipping the report\n";
-      return 0;
-    }
-    return brash::run::run_shell(brash::run::shell_quote(post) + " " + brash::run::shell_quote(run_dir));
-  }
-  return 0;
+  return no_post ? 0 : brash::run::run_postprocessor(run_dir, "[brash-liggghts]");
 }
