@@ -468,6 +468,7 @@ void section_speed(Study& s, std::string& md, const fs::path& plot_png, json& su
     std::ofstream p(gp);
     p << "set terminal pngcairo size 900,600\nset output '" << plot_png.filename().string() << "'\n"
       << "set logscale xy\nset xlabel 'ship speed U [m/s] (model scale)'\nset ylabel 'resistance R [N] (model scale)'\n"
+      << "set termoption noenhanced\nset offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05\n"
       << "set key left top\nset grid\nset title 'Speed sweep: R = a U^n (least squares in log-log)'\nplot ";
     int i = 0;
     for (const Fit& f : fits) {
