@@ -19,6 +19,7 @@
 #include "brash/ode/restart.hpp"
 #include "brash/packing.hpp"
 #include "brash/run_layout.hpp"
+#include "brash/runner_setup.hpp"
 
 namespace brash::ode {
 namespace fs = std::filesystem;
@@ -97,16 +98,6 @@ void check_packing(const std::vector<Sphere>& s, const fs::path& file, double to
     for (const auto& b : bad) msg += "\n  " + b;
     throw InputError(msg);
   }
-}
-
-// Overrides through the YAML text, so they are validated like any case key.
-void set_key(std::string& yaml, const std::string& section, const std::string& key, const std::string& value) {
-  const auto sec = yaml.find("\n" + section + ":");
-  const std::string pat = "\n  " + key + ":";
-  const auto pos = sec == std::string::npos ? sec : yaml.find(pat, sec);
-  if (pos == std::string::npos) throw InputError(fmt::format("cannot override {}.{}", section, key));
-  const auto eol = yaml.find('\n', pos + 1);
-  yaml.replace(pos, eol - pos, pat + " " + value);
 }
 
 core::FluidParams fluid_params(const Case& c) {
@@ -225,32 +216,12 @@ RunResult run_case(const RunOptions& cli_options) {
   using clock = std::chrono::steady_clock;
   const auto t_start = clock::now();
   const fs::path case_file = fs::is_directory(o.case_dir) ? o.case_dir / "case.yaml" : o.case_dir;
-  const fs::path case_root = case_file.parent_path();
-  Case c = load_case(case_file);
-  {
-    std::string yaml = dump_case_yaml(c);
-    if (!o.model.empty()) set_key(yaml, "fluid", "model", o.model);
-    if (!o.treatment.empty()) set_key(yaml, "fluid", "treatment", o.treatment);
-    if (o.duration_s > 0) {
-      set_key(yaml, "run", "duration_s", fmt::format("{}", o.duration_s));
-      if (o.duration_s < c.run.window_s[1]) {
-        const double start = std::min(c.run.window_s[0], 0.5 * o.duration_s);
-        set_key(yaml, "run", "window_s", fmt::format("[{}, {}]", start, o.duration_s));
-      }
-    }
-    c = parse_case(yaml, case_root, case_file.string() + " (with command-line overrides)");
-  }
+  const Case c = run::load_case_with_overrides(case_file, {o.model, o.treatment, o.duration_s}, "[brash-ode]");
   StepperSettings st = o.stepper;
   if (!(st.dt_s > 0) || !std::isfinite(st.dt_s)) throw InputError(fmt::format("--dt {}: must be > 0", st.dt_s));
 
-  // Inputs.
-  if (!fs::exists(c.ice.packing_file))
-    throw InputError(fmt::format("{}: ice.packing_file {} not found; generate it with `brash-pack {}`", case_file.string(),
-                                 c.ice.packing_file.string(), case_root.string()));
-  if (!fs::exists(c.hull.file))
-    throw InputError(fmt::format("{}: hull.file {} not found (searched the case folder, $BRASH_HULL_DIR, "
-                                 "<build>/hull_meshes, <repo>/hull_meshes); build it with `make build`",
-                                 case_file.string(), c.hull.file.string()));
+  // Inputs: the packing is generated on first use (cached in the case folder); the hull must exist.
+  run::prepare_case_inputs(c, case_file, "[brash-ode]");
   const auto spheres = read_packing_csv(c.ice.packing_file);
   if (spheres.empty()) throw InputError(c.ice.packing_file.string() + ": no spheres");
   check_packing(spheres, c.ice.packing_file, o.overlap_tolerance_over_d * c.ice.diameter_mean_m,
