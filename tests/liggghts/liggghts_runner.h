@@ -43,6 +43,16 @@ inline std::vector<std::vector<double>> read_table(const std::filesystem::path& 
   return rows;
 }
 
+// Material and contact lines of a one-material (type 1) ice scene: Hertz with history, E 5 MPa,
+// Poisson 0.3, restitution 0.3 and the given friction. Must follow create_box / read_restart.
+inline std::string ice_contact_model(const std::string& friction) {
+  return "fix m1 all property/global youngsModulus peratomtype 5.e6\n"
+         "fix m2 all property/global poissonsRatio peratomtype 0.3\n"
+         "fix m3 all property/global coefficientRestitution peratomtypepair 1 0.3\n"
+         "fix m4 all property/global coefficientFriction peratomtypepair 1 " + friction + "\n"
+         "pair_style gran model hertz tangential history\npair_coeff * *";
+}
+
 inline std::string read_text(const std::filesystem::path& file) {
   std::ifstream in(file);
   return {std::istreambuf_iterator<char>(in), {}};

@@ -25,14 +25,10 @@ region reg block 0 {L} 0 {L} -0.1 0.1 units box
 create_box 1 reg
 neighbor 0.002 bin
 neigh_modify delay 0
-fix m1 all property/global youngsModulus peratomtype 5.e6
-fix m2 all property/global poissonsRatio peratomtype 0.3
-fix m3 all property/global coefficientRestitution peratomtypepair 1 0.3
-fix m4 all property/global coefficientFriction peratomtypepair 1 1.35
-pair_style gran model hertz tangential history
-pair_coeff * *
+{contacts}
 timestep {dt}
 )",
+                     fmt::arg("contacts", brash::test::ice_contact_model("1.35")),
                      fmt::arg("L", 10 * d), fmt::arg("dt", dt));
 }
 }  // namespace

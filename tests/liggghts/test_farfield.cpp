@@ -41,12 +41,7 @@ create_box 1 reg
   s += fmt::format(R"(set group all diameter {d} density 900
 {groups}neighbor 0.002 bin
 neigh_modify delay 0{exclude}
-fix m1 all property/global youngsModulus peratomtype 5.e6
-fix m2 all property/global poissonsRatio peratomtype 0.3
-fix m3 all property/global coefficientRestitution peratomtypepair 1 0.3
-fix m4 all property/global coefficientFriction peratomtypepair 1 0.5
-pair_style gran model hertz tangential history
-pair_coeff * *
+{contacts}
 timestep {dt}
 {ff}fix integr {grp} nve/sphere
 fix push {grp} addforce 0 1e-3 0
@@ -56,6 +51,7 @@ thermo_style custom step atoms {thermo}
 thermo 100
 run {steps}
 )",
+                     fmt::arg("contacts", brash::test::ice_contact_model("0.5")),
                    fmt::arg("d", kD), fmt::arg("dt", kDt), fmt::arg("steps", kSteps),
                    fmt::arg("groups", farfield ? "group active type 1\ngroup idle subtract all all\n" : ""),
                    fmt::arg("exclude", farfield ? " exclude group idle idle" : ""),

@@ -31,12 +31,7 @@ region reg block -0.05 0.05 -0.05 0.05 -2.0 0.1 units box
 create_box 1 reg
 neighbor 0.002 bin
 neigh_modify delay 0
-fix m1 all property/global youngsModulus peratomtype 5.e6
-fix m2 all property/global poissonsRatio peratomtype 0.3
-fix m3 all property/global coefficientRestitution peratomtypepair 1 0.3
-fix m4 all property/global coefficientFriction peratomtypepair 1 0.3
-pair_style gran model hertz tangential history
-pair_coeff * *
+{contacts}
 timestep {dt}
 create_atoms 1 single 0 0 {z0} units box
 set group all diameter {d} density {rho}
@@ -50,6 +45,7 @@ fix out all print {every} "${{t}} ${{z}} ${{vz}}" file out.txt screen no title "
 {extra}
 run {steps}
 )",
+                     fmt::arg("contacts", brash::test::ice_contact_model("0.3")),
                      fmt::arg("dt", dt), fmt::arg("z0", z0), fmt::arg("d", d), fmt::arg("rho", rho_i),
                      fmt::arg("fix_args", fix_args), fmt::arg("every", print_every), fmt::arg("extra", extra_before_run),
                      fmt::arg("steps", steps));
@@ -150,12 +146,7 @@ communicate single vel yes
 read_restart state.restart
 neighbor 0.002 bin
 neigh_modify delay 0
-fix m1 all property/global youngsModulus peratomtype 5.e6
-fix m2 all property/global poissonsRatio peratomtype 0.3
-fix m3 all property/global coefficientRestitution peratomtypepair 1 0.3
-fix m4 all property/global coefficientFriction peratomtypepair 1 0.3
-pair_style gran model hertz tangential history
-pair_coeff * *
+{contacts}
 timestep {dt}
 fix integr all nve/sphere
 fix grav all gravity 9.81 vector 0 0 -1
@@ -166,6 +157,7 @@ variable vz equal vz[1]
 fix out all print 100 "${{t}} ${{z}} ${{vz}}" file out2.txt screen no title "# t z vz"
 run 10000
 )",
+                     fmt::arg("contacts", brash::test::ice_contact_model("0.3")),
                                            fmt::arg("dt", dt), fmt::arg("args", args));
     ASSERT_EQ(run_liggghts(split, second, 1, "in2.lmp"), 0) << split;
     const auto a = read_table(full / "out.txt"), b = read_table(split / "out2.txt");

@@ -30,12 +30,7 @@ region reg block -0.1 0.1 -0.1 0.1 -0.1 0.1 units box
 create_box 1 reg
 neighbor 0.002 bin
 neigh_modify delay 0
-fix m1 all property/global youngsModulus peratomtype 5.e6
-fix m2 all property/global poissonsRatio peratomtype 0.3
-fix m3 all property/global coefficientRestitution peratomtypepair 1 0.3
-fix m4 all property/global coefficientFriction peratomtypepair 1 1.35
-pair_style gran model hertz tangential history
-pair_coeff * *
+{contacts}
 timestep {dt}
 {atoms}
 set group all diameter {d} density 900
@@ -44,6 +39,7 @@ fix integr all nve/sphere
 thermo 100
 run {steps}
 )",
+                     fmt::arg("contacts", brash::test::ice_contact_model("1.35")),
                      fmt::arg("boundary", boundary), fmt::arg("dt", dt), fmt::arg("atoms", atom_setup),
                      fmt::arg("d", kD), fmt::arg("fixes", fixes), fmt::arg("steps", steps));
 }
