@@ -106,7 +106,7 @@ int run_compare(const std::vector<fs::path>& runs, const fs::path& out) {
 int run_fsicr(const brash::FsicrParams& p, const std::string& ice_class) {
   const auto ic = parse_ice_class(ice_class);
   const auto r = fsicr_channel_resistance(p, ic);
-  fmt::print("ice class {}: H_M = {:.3f} m, H_F = {:.3f} m\n", to_string(ic), r.H_M_m, r.H_F_m);
+  fmt::print("ice class {}: H_M = {:.3f} m, H_F = {:.3f} m\n", brash::to_string(ic), r.H_M_m, r.H_F_m);
   fmt::print("psi = {:.3f} deg, Cmu = {:.4f}, Cpsi = {:.4f}\n", r.psi_deg, r.Cmu, r.Cpsi);
   fmt::print("(L T / B^2)^3 = {:.3f} (used {:.3f})\n", r.LTB3_raw, r.LTB3_used);
   if (ic == IceClass::IA_super) fmt::print("C1 = {:.1f} N, C2 = {:.1f} N\n", r.C1_N, r.C2_N);

@@ -33,26 +33,6 @@ IceClass parse_ice_class(std::string_view text) {
   throw InputError(fmt::format("ice class '{}': expected IA_super, IA, IB or IC", text));
 }
 
-std::string to_string(IceClass c) {
-  switch (c) {
-    case IceClass::IA_super: return "IA_super";
-    case IceClass::IA: return "IA";
-    case IceClass::IB: return "IB";
-    case IceClass::IC: return "IC";
-  }
-  return "?";
-}
-
-double brash_thickness_HM_m(IceClass c) {
-  switch (c) {
-    case IceClass::IA_super:
-    case IceClass::IA: return 1.0;
-    case IceClass::IB: return 0.8;
-    case IceClass::IC: return 0.6;
-  }
-  return 1.0;
-}
-
 double fsicr_psi_deg(double alpha_deg, double phi2_deg) {
   // atan2 keeps phi2 = 90 deg (vertical bow, tan infinite) well defined: psi = 90.
   return std::atan2(std::sin(phi2_deg * kDeg), std::cos(phi2_deg * kDeg) * std::sin(alpha_deg * kDeg)) / kDeg;
@@ -61,7 +41,7 @@ double fsicr_psi_deg(double alpha_deg, double phi2_deg) {
 FsicrResult fsicr_channel_resistance(const FsicrParams& p, IceClass ice_class, const FsicrConstants& k,
                                      std::optional<double> psi_override_deg) {
   FsicrResult r;
-  r.H_M_m = brash_thickness_HM_m(ice_class);
+  r.H_M_m = h_m_for_ice_class(ice_class);
   r.H_F_m = k.HF_offset_m + std::sqrt(r.H_M_m * p.B_m);
   r.psi_deg = psi_override_deg ? *psi_override_deg : fsicr_psi_deg(p.alpha_deg, p.phi2_deg);
   r.Cmu = std::max(k.Cmu_min, 0.15 * std::cos(p.phi2_deg * kDeg) + std::sin(r.psi_deg * kDeg) * std::sin(p.alpha_deg * kDeg));

@@ -45,10 +45,10 @@ TEST(Fsicr, WorkedValue992kN) {
 }
 
 TEST(Fsicr, IceClassSetsHM) {
-  EXPECT_EQ(brash_thickness_HM_m(parse_ice_class("IA_super")), 1.0);
-  EXPECT_EQ(brash_thickness_HM_m(parse_ice_class("IA")), 1.0);
-  EXPECT_EQ(brash_thickness_HM_m(parse_ice_class("IB")), 0.8);
-  EXPECT_EQ(brash_thickness_HM_m(parse_ice_class("ic")), 0.6);
+  EXPECT_EQ(brash::h_m_for_ice_class(parse_ice_class("IA_super")), 1.0);
+  EXPECT_EQ(brash::h_m_for_ice_class(parse_ice_class("IA")), 1.0);
+  EXPECT_EQ(brash::h_m_for_ice_class(parse_ice_class("IB")), 0.8);
+  EXPECT_EQ(brash::h_m_for_ice_class(parse_ice_class("ic")), 0.6);
   EXPECT_THROW(parse_ice_class("PC7"), brash::InputError);
   const auto r = fsicr_channel_resistance(panamax(25, 60, 100), IceClass::IB);
   EXPECT_NEAR(r.H_F_m, 0.26 + std::sqrt(0.8 * 32), 1e-12);

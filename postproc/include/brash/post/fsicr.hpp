@@ -7,17 +7,18 @@
 #include <string_view>
 #include <vector>
 
+#include <brash/case.hpp>
 #include <brash/fsicr_params.hpp>
 
 namespace brash::post {
 
-enum class IceClass { IA_super, IA, IB, IC };
+// The case schema's ice class; its name is brash::to_string(IceClass) and its H_M (1.0 m IA Super/IA,
+// 0.8 m IB, 0.6 m IC) brash::h_m_for_ice_class.
+using IceClass = brash::IceClass;
 
-// "IA_super" (also "IAS", "IA Super"), "IA", "IB", "IC"; InputError otherwise.
+// "IA_super" (also "IAS", "IA Super"), "IA", "IB", "IC", any case (the command line's lenient spelling);
+// InputError otherwise.
 IceClass parse_ice_class(std::string_view text);
-std::string to_string(IceClass c);
-// Thickness of the brash ice in the channel: 1.0 m (IA Super, IA), 0.8 m (IB), 0.6 m (IC).
-double brash_thickness_HM_m(IceClass c);
 
 struct FsicrConstants {
   double C3 = 845.0;  // kg/(m^2 s^2)  [P]
