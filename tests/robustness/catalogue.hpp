@@ -2,6 +2,7 @@
 // reader or command that owns it, and reports how it was rejected (exception text or exit code +
 // output). The tests then check that the rejection names the file (and line/key) and the problem.
 #pragma once
+#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -64,6 +65,19 @@ inline Outcome run_command(const fs::path& dir, const std::string& command) {
 inline std::string replace_all(std::string s, const std::string& from, const std::string& to) {
   for (auto pos = s.find(from); pos != std::string::npos; pos = s.find(from, pos + to.size())) s.replace(pos, from.size(), to);
   return s;
+}
+
+// The entry's expected exit code (256 = any non-zero) and every expected fragment ({dir} = the entry's
+// folder) in the message.
+inline void expect_clear_error(const Entry& e, const Outcome& o, const fs::path& dir) {
+  if (e.exit_code == 256)
+    EXPECT_NE(o.exit_code, 0) << o.message;
+  else
+    EXPECT_EQ(o.exit_code, e.exit_code) << o.message;
+  for (const auto& want : e.expect) {
+    const std::string w = replace_all(want, "{dir}", dir.string());
+    EXPECT_NE(o.message.find(w), std::string::npos) << "expected '" << w << "' in:\n" << o.message;
+  }
 }
 
 }  // namespace brash::robust

@@ -56,14 +56,7 @@ TEST_P(Cli, RejectedWithClearMessage) {
   const Entry& e = GetParam();
   const fs::path dir = fresh_dir(e.name);
   const Outcome o = e.run(dir);
-  if (e.exit_code == 256)
-    EXPECT_NE(o.exit_code, 0) << o.message;
-  else
-    EXPECT_EQ(o.exit_code, e.exit_code) << o.message;
-  for (const auto& want : e.expect) {
-    const std::string w = replace_all(want, "{dir}", dir.string());
-    EXPECT_NE(o.message.find(w), std::string::npos) << "expected '" << w << "' in:\n" << o.message;
-  }
+  expect_clear_error(e, o, dir);
   fs::remove_all(dir);
 }
 
