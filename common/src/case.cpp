@@ -227,7 +227,7 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
   }
   if (!root.IsDefined() || root.IsNull()) throw InputError(source + ": empty case file");
   r.check_map(root, "", {"name", "description", "hull", "ship", "channel", "ice", "water", "friction",
-                         "contact", "fluid", "run", "fsicr", "speedups"});
+                         "contact", "fluid", "run", "fsicr", "speedups", "guards"});
 
   Case c;
   if (!root["name"].IsDefined()) throw InputError(source + ": key 'name': missing (required)");
@@ -400,6 +400,15 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
              fmt::format("{} m is less than 2 ice diameters ({} m): the bow would push idle ice",
                          c.speedups.farfield_ahead_m, 2 * c.ice.diameter_mean_m));
   }
+  {  // guards (docs/stability.md)
+    const auto s = r.section(root, "guards", {"max_hull_penetration_d", "every_steps"});
+    r.num(s, "guards", "max_hull_penetration_d", c.guards.max_hull_penetration_d,
+          [](double f) { return f >= 0 && f <= 10; }, "in [0, 10] (fraction of the piece diameter; 0 = off)");
+    double every = c.guards.every_steps;
+    r.num(s, "guards", "every_steps", every, [](double n) { return n >= 1 && n <= 1e6 && n == std::floor(n); },
+          "an integer in [1, 1000000]");
+    c.guards.every_steps = static_cast<int>(every);
+  }
   return c;
 }
 
@@ -528,6 +537,9 @@ std::string dump_case_yaml(const Case& c) {
   line("  ", "symmetry_y", c.speedups.symmetry_y ? "true" : "false");
   line("  ", "neighbor_skin_d", num(c.speedups.neighbor_skin_d));
   line("  ", "early_stop_rel_ci", num(c.speedups.early_stop_rel_ci));
+  o += "guards:\n";
+  line("  ", "max_hull_penetration_d", num(c.guards.max_hull_penetration_d));
+  line("  ", "every_steps", fmt::format("{}", c.guards.every_steps));
   return o;
 }
 

@@ -8,11 +8,13 @@
 #include <cstring>
 #include <limits>
 #include <string>
+#include <memory>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "atom.h"
+#include "brash/hull/mesh.hpp"
 #include "comm.h"
 #include "error.h"
 #include "update.h"
@@ -37,6 +39,20 @@ FixBrashGuard::FixBrashGuard(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg,
   }
   if (cfg_.youngs_modulus_pa && !(atom->radius_flag && atom->rmass_flag) && !(cfg_.r_min_m && cfg_.density_kg_m3))
     error->all(FLERR, "fix brash/guard: the time-step check needs per-atom radius and mass, or rmin and density");
+  if (!cfg_.hull_file.empty()) {
+    if (!atom->radius_flag) error->all(FLERR, "fix brash/guard: the hull check needs per-atom radii (atom_style granular)");
+    try {
+      const brash::hull::Mesh mesh = brash::hull::read_mesh(cfg_.hull_file);
+      hull_ = std::make_unique<brash::hull::Proximity>(mesh);
+    } catch (const std::exception& e) {
+      error->all(FLERR, fmt::format("fix brash/guard: hull {}: {}", cfg_.hull_file, e.what()).c_str());
+    }
+    if (!hull_->closed())
+      error->all(FLERR, fmt::format("fix brash/guard: hull {} is not a closed surface: the hull check needs the full "
+                                    "closed hull (inside/outside), not a band or half of it",
+                                    cfg_.hull_file)
+                            .c_str());
+  }
   nevery = static_cast<int>(cfg_.every);
 }
 
@@ -85,15 +101,10 @@ void FixBrashGuard::check_timestep() {
     info[1] = *cfg_.r_min_m, info[2] = *cfg_.density_kg_m3;
   }
   MPI_Bcast(info, 3, MPI_DOUBLE, out.rank, world);
-  const double dt = update->dt;
-  if (dt > cfg_.max_dt_fraction * out.t) {
+  if (const auto cause = guard::check_timestep(update->dt, info[1], info[2], e, nu, cfg_.max_dt_fraction)) {
     const std::string who = (cfg_.r_min_m && cfg_.density_kg_m3) ? std::string("rmin/density")
                                                                  : fmt::format("atom {:.0f}", info[0]);
-    const std::string msg = fmt::format(
-        "fix brash/guard: step {}: {}: timestep {:g} s is too large for the contact stiffness: {:.0f} % of the "
-        "Rayleigh time {:.4g} s (r = {:g} m, rho = {:g} kg/m^3, E = {:g} Pa, nu = {:g}); limit {:.0f} %, use dt <= {:.4g} s",
-        update->ntimestep, who, dt, 100 * dt / out.t, out.t, info[1], info[2], e, nu, 100 * cfg_.max_dt_fraction,
-        cfg_.max_dt_fraction * out.t);
+    const std::string msg = fmt::format("fix brash/guard: step {}: {}: {}", update->ntimestep, who, *cause);
     error->all(FLERR, msg.c_str());
   }
 }
@@ -103,43 +114,35 @@ void FixBrashGuard::check_atoms() {
   double** v = atom->v;
   double** f = atom->f;
   const int nlocal = atom->nlocal;
+  guard::Limits limits;
+  limits.box = cfg_.box;
+  limits.z_max_m = cfg_.z_max_m;
+  limits.ke_max_J = cfg_.ke_max_J;
+  guard::HullNow hull;
+  if (hull_) {
+    // The hull frame moves at constant velocity from time 0: t = step * dt, as brash-liggghts-run's
+    // fix move/mesh moves the mesh from step 0 (its time and the mesh nodes are restored by read_restart, and
+    // so is the step counter, so the two agree after a resume too).
+    const double t = static_cast<double>(update->ntimestep) * update->dt;
+    limits.max_hull_penetration_d = cfg_.max_penetration;
+    hull.proximity = hull_.get();
+    for (int k = 0; k < 3; ++k) hull.origin_m[k] = cfg_.hull_origin_m[k] + cfg_.hull_velocity_m_s[k] * t;
+  }
   // First offending atom on this rank (lowest id) and its cause.
   double worst_tag = std::numeric_limits<double>::infinity();
   std::string cause;
-  static const char* const kAxis[3] = {"x", "y", "z"};
   for (int i = 0; i < nlocal; ++i) {
     if (!(atom->mask[i] & groupbit)) continue;
     const double tag = static_cast<double>(atom->tag[i]);
     if (tag >= worst_tag) continue;
-    std::string c;
-    for (int k = 0; k < 3 && c.empty(); ++k) {
-      if (!std::isfinite(x[i][k])) c = fmt::format("non-finite position: {} = {}", kAxis[k], x[i][k]);
-      else if (!std::isfinite(v[i][k])) c = fmt::format("non-finite velocity: v{} = {}", kAxis[k], v[i][k]);
-      else if (!std::isfinite(f[i][k])) c = fmt::format("non-finite force: f{} = {}", kAxis[k], f[i][k]);
-    }
-    if (c.empty() && cfg_.box) {
-      const auto& b = *cfg_.box;
-      for (int k = 0; k < 3 && c.empty(); ++k) {
-        if (x[i][k] < b[2 * k])
-          c = fmt::format("left the box: {} = {:.6g} < {}lo = {:.6g} (m)", kAxis[k], x[i][k], kAxis[k], b[2 * k]);
-        else if (x[i][k] > b[2 * k + 1])
-          c = fmt::format("left the box: {} = {:.6g} > {}hi = {:.6g} (m)", kAxis[k], x[i][k], kAxis[k], b[2 * k + 1]);
-      }
-    }
-    if (c.empty() && cfg_.z_max_m && x[i][2] > *cfg_.z_max_m)
-      c = fmt::format("above zmax: z = {:.6g} > {:.6g} m (jumped out of the water)", x[i][2], *cfg_.z_max_m);
-    if (c.empty() && cfg_.ke_max_J) {
-      const double m = atom->rmass_flag ? atom->rmass[i] : atom->mass[atom->type[i]];
-      double ke = 0.5 * m * (v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
-      if (atom->omega_flag && atom->radius_flag) {
-        const double* w = atom->omega[i];
-        ke += 0.5 * 0.4 * m * atom->radius[i] * atom->radius[i] * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
-      }
-      if (ke > *cfg_.ke_max_J)
-        c = fmt::format("runaway kinetic energy: {:.4g} J > ke_max = {:.4g} J (|v| = {:.4g} m/s)", ke, *cfg_.ke_max_J,
-                        std::sqrt(v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]));
-    }
-    if (!c.empty()) worst_tag = tag, cause = std::move(c);
+    guard::Piece p;
+    p.x_m = Eigen::Vector3d(x[i][0], x[i][1], x[i][2]);
+    p.v_m_s = Eigen::Vector3d(v[i][0], v[i][1], v[i][2]);
+    p.force_N = Eigen::Vector3d(f[i][0], f[i][1], f[i][2]);
+    if (atom->omega_flag) p.omega_rad_s = Eigen::Vector3d(atom->omega[i][0], atom->omega[i][1], atom->omega[i][2]);
+    p.radius_m = atom->radius_flag ? atom->radius[i] : 0.0;
+    p.mass_kg = atom->rmass_flag ? atom->rmass[i] : atom->mass[atom->type[i]];
+    if (auto c = guard::check_piece(p, limits, hull_ ? &hull : nullptr)) worst_tag = tag, cause = std::move(*c);
   }
   struct {
     double tag;

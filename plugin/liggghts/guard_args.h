@@ -24,6 +24,13 @@ struct GuardConfig {
   std::optional<double> density_kg_m3;           // default: each atom's own density
   std::optional<double> r_min_m;                 // default: each atom's own radius
   double max_dt_fraction = 0.3;                  // largest accepted dt / T_R
+  // Hull penetration: the full closed hull (STL, its own frame) whose frame origin is at hull_origin_m at
+  // time 0 and moves at hull_velocity_m_s; stop when a sphere overlaps it by more than
+  // max_penetration x its diameter.
+  std::string hull_file;                         // empty = no hull guard
+  std::array<double, 3> hull_origin_m{};
+  std::array<double, 3> hull_velocity_m_s{};
+  std::optional<double> max_penetration;         // default 0.5 (centre on the surface) when hull is given
 };
 
 // Rayleigh time of a Hertz contact: T_R = pi r sqrt(rho / G) / (0.1631 nu + 0.8766), G = E / (2 (1 + nu)).
@@ -92,11 +99,23 @@ inline GuardConfig parse_guard_args(const std::vector<std::string>& args) {
       need(1), c.r_min_m = positive(num(1)), i += 2;
     } else if (key == "max_dt_fraction") {
       need(1), c.max_dt_fraction = positive(num(1)), i += 2;
+    } else if (key == "hull") {
+      need(7);
+      if (args[i + 1].empty()) fail("keyword 'hull' needs a file name");
+      c.hull_file = args[i + 1];
+      for (std::size_t k = 0; k < 3; ++k) c.hull_origin_m[k] = num(k + 2), c.hull_velocity_m_s[k] = num(k + 5);
+      i += 8;
+    } else if (key == "max_penetration") {
+      need(1), c.max_penetration = positive(num(1)), i += 2;
     } else {
-      fail("unknown keyword '" + key + "' (expected every, box, zmax, ke_max, youngs, poisson, density, rmin, max_dt_fraction)");
+      fail("unknown keyword '" + key +
+           "' (expected every, box, zmax, ke_max, youngs, poisson, density, rmin, max_dt_fraction, hull, "
+           "max_penetration)");
     }
   }
   if (!have_every) fail("missing 'every N' (how often to check)");
+  if (c.max_penetration && c.hull_file.empty()) fail("'max_penetration' belongs to the hull check, which needs 'hull FILE ...'");
+  if (!c.hull_file.empty() && !c.max_penetration) c.max_penetration = 0.5;
   if (!c.youngs_modulus_pa && (c.density_kg_m3 || c.r_min_m))
     fail("'density' and 'rmin' belong to the time-step check, which needs 'youngs E'");
   return c;

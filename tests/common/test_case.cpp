@@ -149,6 +149,8 @@ TEST(CaseLoader, DumpThenLoadGivesTheSameCase) {
     c.speedups.farfield_every_steps = 37;
     c.speedups.symmetry_y = true;
     c.speedups.neighbor_skin_d = 0.35;
+    c.guards.max_hull_penetration_d = 0.3;
+    c.guards.every_steps = 7;
     const fs::path run = temp_dir(std::string("rt_") + name);
     const Case back = brash::load_case(write_case(run, brash::dump_case_yaml(c)));
     EXPECT_EQ(back, c) << brash::dump_case_yaml(c) << "\n---\n" << brash::dump_case_yaml(back);
@@ -236,6 +238,29 @@ TEST(CaseLoaderErrors, SpeedupsKeysNamed) {
                {"speedups.farfield_ahead_m", "2 ice diameters"});
   expect_error("name: x\nspeedups: {neighbor_skin_d: 0}\n", {"speedups.neighbor_skin_d", "(0, 2]"});
   expect_error("name: x\nspeedups: {symmetry_y: [1]}\n", {"speedups.symmetry_y"});
+}
+
+TEST(CaseLoader, GuardsDefaultAndRead) {
+  const Case d = brash::parse_case("name: x\n", kRepo, "mem");
+  EXPECT_DOUBLE_EQ(d.guards.max_hull_penetration_d, 0.5);
+  EXPECT_EQ(d.guards.every_steps, 10);
+  const Case c =
+      brash::parse_case("name: x\nguards:\n  max_hull_penetration_d: 0.25\n  every_steps: 5\n", kRepo, "mem");
+  EXPECT_DOUBLE_EQ(c.guards.max_hull_penetration_d, 0.25);
+  EXPECT_EQ(c.guards.every_steps, 5);
+  EXPECT_DOUBLE_EQ(brash::parse_case("name: x\nguards: {max_hull_penetration_d: 0}\n", kRepo, "mem")
+                       .guards.max_hull_penetration_d,
+                   0.0);  // 0 = off
+}
+
+TEST(CaseLoaderErrors, GuardsKeysNamed) {
+  expect_error("name: x\nguards:\n  max_hull_penetration: 0.3\n",
+               {"guards.max_hull_penetration", "unknown key", ":3:"});
+  expect_error("name: x\nguards: {max_hull_penetration_d: -0.1}\n", {"guards.max_hull_penetration_d", "[0, 10]"});
+  expect_error("name: x\nguards: {max_hull_penetration_d: .nan}\n", {"guards.max_hull_penetration_d", "finite"});
+  expect_error("name: x\nguards: {every_steps: 0}\n", {"guards.every_steps", "integer"});
+  expect_error("name: x\nguards: {every_steps: 2.5}\n", {"guards.every_steps", "integer"});
+  expect_error("name: x\nguards: 3\n", {"guards", "mapping"});
 }
 
 TEST(CaseLoaderErrors, MissingFile) {

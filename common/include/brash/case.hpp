@@ -122,6 +122,16 @@ struct SpeedupSpec {
   bool operator==(const SpeedupSpec&) const = default;
 };
 
+// Run-time guards (docs/stability.md, "Run-time guards"): what stops a run that is going wrong. The other
+// guard limits (domain box, zmax, kinetic energy, dt vs contact stiffness) follow from the case itself.
+struct GuardSpec {
+  // Stop when a piece overlaps the (full, closed) hull by more than this fraction of its diameter;
+  // 0.5 = its centre reached the hull surface; 0 = off.
+  double max_hull_penetration_d = 0.5;
+  int every_steps = 10;  // check every N steps
+  bool operator==(const GuardSpec&) const = default;
+};
+
 // Optional overrides of the FSICR hull parameters measured on the STL (full scale).
 struct FsicrOverrides {
   std::optional<double> alpha_deg, phi1_deg, phi2_deg, psi_deg, L_par_m, L_bow_m, A_wf_m2;
@@ -142,6 +152,7 @@ struct Case {
   RunSpec run;
   FsicrOverrides fsicr;
   SpeedupSpec speedups;
+  GuardSpec guards;
   bool operator==(const Case&) const = default;
 };
 

@@ -6,24 +6,16 @@
 #include <numbers>
 #include <fmt/format.h>
 
+#include "brash/guard.hpp"
+
 namespace brash::liggghts {
 
 Box scene_box(const Case& c, double hull_x_min_m, double hull_x_max_m, double hull_z_min_m, double hull_z_max_m,
               double duration_s) {
-  const double travel = c.ship.speed_m_s * duration_s;
-  const double d = c.ice.diameter_mean_m;
-  Box b;
-  b.xlo = std::min(0.0, c.hull.start_x_m + hull_x_min_m) - 10 * d;
-  // Ice pushed ahead of the bow leaves the channel end into open water: leave room for it (an atom
-  // leaving the box would be lost; thermo_modify lost error and fix brash/guard stop the run). A packed
-  // bed is pushed ahead as a plug, at most at the ship's speed: room for the ship's whole travel.
-  const double open_water = std::max({0.5, 0.1 * c.channel.length_m, travel});
-  b.xhi = std::max(c.channel.length_m + open_water, c.hull.start_x_m + hull_x_max_m + travel) + 10 * d;
-  b.ylo = c.speedups.symmetry_y ? -2 * d : -0.5 * c.channel.width_m - 2 * d;
-  b.yhi = 0.5 * c.channel.width_m + 2 * d;
-  b.zlo = std::min(hull_z_min_m - c.hull.draft_m, -6 * c.ice.thickness_m) - 2 * d;
-  b.zhi = std::max(hull_z_max_m - c.hull.draft_m, 6 * c.ice.thickness_m) + 2 * d;
-  return b;
+  // The same domain every engine's box guard uses (an atom leaving it would be lost; thermo_modify lost error
+  // and fix brash/guard stop the run).
+  const auto d = guard::domain_box(c, hull_x_min_m, hull_x_max_m, hull_z_min_m, hull_z_max_m, duration_s);
+  return Box{d[0], d[1], d[2], d[3], d[4], d[5]};
 }
 
 std::vector<Sphere> half_channel_spheres(const std::vector<Sphere>& spheres) {
@@ -138,18 +130,21 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
   s += fmt::format("fix integr {} nve/sphere\n", moving);
   s += fmt::format("fix grav {} gravity {:.9g} vector 0 0 -1\n", moving, c.water.gravity_m_s2);
   s += "fix ts all check/timestep/gran 1000 0.1 0.1\n";
-  // run-time guards (END_OF_STEP, reads only): NaN/Inf, atoms about to leave the box or jumping far above the
-  // water, runaway kinetic energy (largest sphere at 20x ship speed, at least 5 m/s), dt vs contact stiffness
-  const double gd = 0.25 * c.ice.diameter_mean_m;
-  const double dmax = c.ice.diameter_mean_m + c.ice.diameter_truncation_sd * c.ice.diameter_sd_m;
-  const double vmax = std::max(20 * c.ship.speed_m_s, 5.0);
-  const double ke_max = 0.5 * c.ice.density_kg_m3 * std::numbers::pi / 6 * dmax * dmax * dmax * vmax * vmax;
+  // run-time guards (END_OF_STEP, reads only; brash::guard, docs/stability.md): NaN/Inf, atoms about to leave
+  // the box or jumping far above the water, runaway kinetic energy (largest sphere at 20x ship speed, at least
+  // 5 m/s), dt vs contact stiffness, and penetration into the full closed hull (frame origin at
+  // (start_x, 0, -draft) at t = 0, moving with the ship like fix mv)
+  const auto lim = guard::limits_for_case(c, {box.xlo, box.xhi, box.ylo, box.yhi, box.zlo, box.zhi});
+  const auto& gb = *lim.box;
   s += fmt::format(
-      "fix guard all brash/guard every 10 box {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} zmax {:.9g} ke_max {:.6g} "
-      "youngs {:g} poisson {:g} max_dt_fraction {:g}\n",
-      box.xlo + gd, box.xhi - gd, box.ylo + gd, box.yhi - gd, box.zlo + gd, box.zhi - gd,
-      std::min(box.zhi - gd, c.water.level_m + 5 * c.ice.thickness_m), ke_max, c.contact.youngs_modulus_pa,
-      c.contact.poisson_ratio, kMaxTimestepOverRayleigh);
+      "fix guard all brash/guard every {} box {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} zmax {:.9g} "
+      "ke_max {:.6g} youngs {:g} poisson {:g} max_dt_fraction {:g}",
+      c.guards.every_steps, gb[0], gb[1], gb[2], gb[3], gb[4], gb[5], *lim.z_max_m, *lim.ke_max_J,
+      c.contact.youngs_modulus_pa, c.contact.poisson_ratio, kMaxTimestepOverRayleigh);
+  if (lim.max_hull_penetration_d && !opt.guard_hull_file.empty())
+    s += fmt::format(" hull {} {:.9g} 0 {:.9g} {:.9g} 0 0 max_penetration {:g}", opt.guard_hull_file, hull_x0,
+                     -c.hull.draft_m, c.ship.speed_m_s, *lim.max_hull_penetration_d);
+  s += "\n";
   // fluid forces last: implicit added mass scales the sum of all other forces
   s += fmt::format(
       "fix fl {} icefluid model {} treatment {} cd {:.9g} drag_law {} nu {:.9g} ca {} water_level {:.9g} "

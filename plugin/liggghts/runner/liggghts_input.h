@@ -17,6 +17,9 @@ struct SceneOptions {
   int ranks = 1;
   std::string restart_file;      // resume from this restart (relative to the run dir) instead of packing.data
   std::string hull_file = "hull.stl";  // inside the run dir, in the STL's own frame (keel at z=0)
+  // The full closed hull for fix brash/guard's hull check (the contact hull may be a band or a half);
+  // empty = no hull check.
+  std::string guard_hull_file = "hull.stl";
   double hull_x_min_m = 0;      // x extent of the hull in the STL frame (stern, bow) for speedups.farfield
   double hull_x_max_m = 0;
 };

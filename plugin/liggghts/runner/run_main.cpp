@@ -280,8 +280,12 @@ int main(int argc, char** argv) {
       throw InputError(fmt::format("{}: channel.width_m = {} m is not wider than the hull ({} m across in {}): the "
                                    "channel walls would cut the hull",
                                    case_file.string(), c.channel.width_m, 2 * hull_half_beam, c.hull.file.string()));
+    // The hull guard needs the full closed hull; the contact mesh may be a band or a half of it.
+    const brash::hull::Mesh full_mesh = mesh;
+    const bool full_closed = brash::hull::check_mesh(full_mesh).closed;
     if (c.hull.band_m) mesh = brash::hull::clip_band(mesh, c.hull.draft_m - (*c.hull.band_m)[0], c.hull.draft_m + (*c.hull.band_m)[1]);
     if (c.speedups.symmetry_y) mesh = brash::liggghts::half_hull(mesh);
+    const bool reduced_mesh = c.hull.band_m || c.speedups.symmetry_y;
 
     const auto box = brash::liggghts::scene_box(c, xmin, xmax, zmin, zmax, run_duration);
     std::vector<std::string> restarts;
@@ -306,6 +310,16 @@ int main(int argc, char** argv) {
                                                           c.speedups.symmetry_y ? 4 : 3));
     }
     brash::liggghts::SceneOptions opt;
+    if (!full_closed || c.guards.max_hull_penetration_d <= 0) {
+      opt.guard_hull_file.clear();
+      if (!full_closed)
+        std::cerr << "[brash-liggghts] note: " << c.hull.file.string()
+                  << " is not a closed surface: the hull penetration guard is off\n";
+    } else if (reduced_mesh) {
+      opt.guard_hull_file = "hull_full.stl";  // also written on resume when an older run dir lacks it
+      if (!resume || !fs::exists(run_dir / opt.guard_hull_file))
+        brash::hull::write_stl(run_dir / opt.guard_hull_file, full_mesh);
+    }
     opt.duration_s = run_duration;
     opt.ranks = ranks;
     opt.hull_x_min_m = xmin;

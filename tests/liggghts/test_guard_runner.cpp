@@ -1,0 +1,85 @@
+// brash-liggghts-run with the run-time guards (docs/stability.md, "Run-time guards") on a small case: the
+// quick case narrowed and shortened (the JBC bow enters a 0.8 m channel of 35 mm ice; the contact hull is the
+// case's waterline band, the guard's the full closed hull written as hull_full.stl).
+//   - a normal run does not trip any guard, the hull guard included;
+//   - with guards.max_hull_penetration_d tiny, the first real hull contact stops the run: the message names
+//   the
+//     step, the atom and the cause, meta.json says failed with it, hull_force.csv and particles/ stay
+//     readable.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <string>
+
+#include "liggghts_runner.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+void write_small_case(const fs::path& case_dir, const std::string& duration, const std::string& extra) {
+  std::string yaml = brash::test::read_text(fs::path(BRASH_SOURCE_DIR) / "cases/jbc_quick/case.yaml");
+  auto set = [&](const std::string& key, const std::string& value) {
+    yaml = std::regex_replace(yaml, std::regex("\n  " + key + ":[^\n]*"), "\n  " + key + ": " + value);
+  };
+  set("length_m", "0.8");
+  set("width_m", "1.3");
+  set("start_x_m", "-7.05");
+  set("duration_s", duration);
+  set("window_s", "[0.0, " + duration + "]");
+  set("output_interval_s", "0.01");
+  set("dump_interval_s", "0.05");
+  fs::create_directories(case_dir);
+  std::ofstream(case_dir / "case.yaml") << yaml << extra;
+}
+
+int run_case(const fs::path& dir) {
+  const std::string cmd = std::string("env BRASH_HULL_DIR='") + BRASH_HULL_DIR + "' '" + BRASH_BIN_DIR +
+                          "/brash-liggghts-run' '" + (dir / "case").string() + "' --no-post --out '" +
+                          (dir / "run").string() + "' > '" + (dir / "run.log").string() + "' 2>&1";
+  return std::system(cmd.c_str());
+}
+
+}  // namespace
+
+TEST(LiggghtsGuardRunner, NormalRunDoesNotTripTheHullGuard) {
+  const fs::path dir = brash::test::fresh_dir("guard_normal");
+  write_small_case(dir / "case", "0.3", "");
+  EXPECT_EQ(run_case(dir), 0) << brash::test::read_text(dir / "run.log");
+  const std::string in = brash::test::read_text(dir / "run/in.lmp");
+  EXPECT_NE(in.find(" hull hull_full.stl -7.05 0 -0.4125 0.482 0 0 max_penetration 0.5\n"), std::string::npos)
+      << in;
+  EXPECT_TRUE(fs::exists(dir / "run/hull_full.stl"));
+  EXPECT_NE(brash::test::read_text(dir / "run/meta.json").find("\"complete\""), std::string::npos);
+  // The bow did push ice: there was hull contact for the guard to look at.
+  const auto log = brash::test::read_text(dir / "run/log.txt");
+  EXPECT_EQ(log.find("ERROR"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST(LiggghtsGuardRunner, HullPenetrationStopsTheRunWithAClearMessage) {
+  const fs::path dir = brash::test::fresh_dir("guard_stop");
+  // 1e-4 d = 3.5 micrometres: any Hertz contact with the hull is deeper than that.
+  write_small_case(dir / "case", "0.3", "guards:\n  max_hull_penetration_d: 1.0e-4\n  every_steps: 5\n");
+  EXPECT_NE(run_case(dir), 0);
+  const std::string meta = brash::test::read_text(dir / "run/meta.json");
+  EXPECT_NE(meta.find("\"status\": \"failed\""), std::string::npos) << meta;
+  const std::regex re(
+      R"("reason": "ERROR: fix brash/guard: step ([0-9]+): atom [0-9]+: hull penetration: [0-9.e-]+ m = [0-9]+ % of its )"
+      R"(diameter [0-9.]+ m > max_hull_penetration_d 0.0001 \(centre outside the hull; hull frame x = )");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(meta, m, re)) << meta;
+  const long step = std::stol(m[1]);
+  EXPECT_GT(step, 0);
+  EXPECT_EQ(step % 5, 0);
+  // Outputs up to the stop: hull force rows until its time, the snapshot index readable.
+  const std::string csv = brash::test::read_text(dir / "run/hull_force.csv");
+  ASSERT_EQ(csv.rfind("t_s,fx_N,fy_N,fz_N\n", 0), 0u);
+  EXPECT_GT(std::count(csv.begin(), csv.end(), '\n'), 1);
+  EXPECT_TRUE(fs::exists(dir / "run/particles/index.csv"));
+  EXPECT_NE(brash::test::read_text(dir / "run.log").find("hull penetration"), std::string::npos);
+  fs::remove_all(dir);
+}
