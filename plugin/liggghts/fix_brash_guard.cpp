@@ -2,16 +2,15 @@
 // lowest id over all ranks is reported by every rank through the same error->all message.
 #include "fix_brash_guard.h"
 
+#include <fmt/format.h>
 #include <mpi.h>
 
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <string>
 #include <memory>
+#include <string>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "atom.h"
 #include "brash/hull/mesh.hpp"
@@ -40,7 +39,8 @@ FixBrashGuard::FixBrashGuard(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg,
   if (cfg_.youngs_modulus_pa && !(atom->radius_flag && atom->rmass_flag) && !(cfg_.r_min_m && cfg_.density_kg_m3))
     error->all(FLERR, "fix brash/guard: the time-step check needs per-atom radius and mass, or rmin and density");
   if (!cfg_.hull_file.empty()) {
-    if (!atom->radius_flag) error->all(FLERR, "fix brash/guard: the hull check needs per-atom radii (atom_style granular)");
+    if (!atom->radius_flag)
+      error->all(FLERR, "fix brash/guard: the hull check needs per-atom radii (atom_style granular)");
     try {
       const brash::hull::Mesh mesh = brash::hull::read_mesh(cfg_.hull_file);
       hull_ = std::make_unique<brash::hull::Proximity>(mesh);
@@ -48,9 +48,10 @@ FixBrashGuard::FixBrashGuard(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg,
       error->all(FLERR, fmt::format("fix brash/guard: hull {}: {}", cfg_.hull_file, e.what()).c_str());
     }
     if (!hull_->closed())
-      error->all(FLERR, fmt::format("fix brash/guard: hull {} is not a closed surface: the hull check needs the full "
-                                    "closed hull (inside/outside), not a band or half of it",
-                                    cfg_.hull_file)
+      error->all(FLERR, fmt::format(
+                            "fix brash/guard: hull {} is not a closed surface: the hull check needs the full "
+                            "closed hull (inside/outside), not a band or half of it",
+                            cfg_.hull_file)
                             .c_str());
   }
   nevery = static_cast<int>(cfg_.every);
@@ -139,10 +140,12 @@ void FixBrashGuard::check_atoms() {
     p.x_m = Eigen::Vector3d(x[i][0], x[i][1], x[i][2]);
     p.v_m_s = Eigen::Vector3d(v[i][0], v[i][1], v[i][2]);
     p.force_N = Eigen::Vector3d(f[i][0], f[i][1], f[i][2]);
-    if (atom->omega_flag) p.omega_rad_s = Eigen::Vector3d(atom->omega[i][0], atom->omega[i][1], atom->omega[i][2]);
+    if (atom->omega_flag)
+      p.omega_rad_s = Eigen::Vector3d(atom->omega[i][0], atom->omega[i][1], atom->omega[i][2]);
     p.radius_m = atom->radius_flag ? atom->radius[i] : 0.0;
     p.mass_kg = atom->rmass_flag ? atom->rmass[i] : atom->mass[atom->type[i]];
-    if (auto c = guard::check_piece(p, limits, hull_ ? &hull : nullptr)) worst_tag = tag, cause = std::move(*c);
+    if (auto c = guard::check_piece(p, limits, hull_ ? &hull : nullptr))
+      worst_tag = tag, cause = std::move(*c);
   }
   struct {
     double tag;

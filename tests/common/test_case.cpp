@@ -256,8 +256,10 @@ TEST(CaseLoader, GuardsDefaultAndRead) {
 TEST(CaseLoaderErrors, GuardsKeysNamed) {
   expect_error("name: x\nguards:\n  max_hull_penetration: 0.3\n",
                {"guards.max_hull_penetration", "unknown key", ":3:"});
-  expect_error("name: x\nguards: {max_hull_penetration_d: -0.1}\n", {"guards.max_hull_penetration_d", "[0, 10]"});
-  expect_error("name: x\nguards: {max_hull_penetration_d: .nan}\n", {"guards.max_hull_penetration_d", "finite"});
+  expect_error("name: x\nguards: {max_hull_penetration_d: -0.1}\n",
+               {"guards.max_hull_penetration_d", "[0, 10]"});
+  expect_error("name: x\nguards: {max_hull_penetration_d: .nan}\n",
+               {"guards.max_hull_penetration_d", "finite"});
   expect_error("name: x\nguards: {every_steps: 0}\n", {"guards.every_steps", "integer"});
   expect_error("name: x\nguards: {every_steps: 2.5}\n", {"guards.every_steps", "integer"});
   expect_error("name: x\nguards: 3\n", {"guards", "mapping"});

@@ -1,8 +1,7 @@
 // fix brash/guard (plugin/liggghts/fix_brash_guard.h): tiny LIGGGHTS scenes that trip each guard, and
 // the guard's argument errors. Each stop must name the step, the atom id and the cause.
-#include <gtest/gtest.h>
-
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include <regex>
 #include <sstream>
@@ -175,9 +174,11 @@ Run run_in(const fs::path& dir, const std::string& input, int ranks = 1, const s
 }
 
 void expect_hull_stop_at_500(const Run& r, const std::string& atom = "1") {
-  expect_stop_any(r, atom, R"(hull penetration: 0\.0(08|09)[0-9]* m = 5[0-9] % of its diameter 0\.01758 m > )"
-                           R"(max_hull_penetration_d 0\.5 \(centre inside the hull)");
-  EXPECT_TRUE(r.screen.find("step 500:") != std::string::npos || r.screen.find("step 501:") != std::string::npos)
+  expect_stop_any(r, atom,
+                  R"(hull penetration: 0\.0(08|09)[0-9]* m = 5[0-9] % of its diameter 0\.01758 m > )"
+                  R"(max_hull_penetration_d 0\.5 \(centre inside the hull)");
+  EXPECT_TRUE(r.screen.find("step 500:") != std::string::npos ||
+              r.screen.find("step 501:") != std::string::npos)
       << r.screen;
 }
 
@@ -193,38 +194,48 @@ TEST(Guard, SphereInsideTheMovingHullOnTwoRanks) {
   // first; rank 1 finds it and sends the cause to rank 0, which prints the error.
   const auto dir = fresh_dir("guard_hull2");
   write_box_hull(dir);
-  const std::string atoms = "create_atoms 1 single 0.05 -0.01 -0.02 units box\ncreate_atoms 1 single 0 0.01 -0.02 "
-                            "units box";
-  const auto r = run_in(dir, "processors 1 2 1\n" + scene(1e-4, atoms, "fix g all brash/guard every 1 " + kHull, 1000), 2);
+  const std::string atoms =
+      "create_atoms 1 single 0.05 -0.01 -0.02 units box\ncreate_atoms 1 single 0 0.01 -0.02 "
+      "units box";
+  const auto r = run_in(
+      dir, "processors 1 2 1\n" + scene(1e-4, atoms, "fix g all brash/guard every 1 " + kHull, 1000), 2);
   expect_hull_stop_at_500(r, "2");
 }
 
 TEST(Guard, OverlapFromOutsideAboveTheThreshold) {
   // max_penetration 0.1: stop once the front face is 0.1 d = 1.76 mm past the sphere's leading point, i.e. at
-  // -0.05 + t = -r + 0.1 d (t = 0.04297: step 430), with the centre still outside (0.047 m from the hull frame's
-  // origin, the front face being at x = 0.04 in that frame).
+  // -0.05 + t = -r + 0.1 d (t = 0.04297: step 430), with the centre still outside (0.047 m from the hull
+  // frame's origin, the front face being at x = 0.04 in that frame).
   const auto dir = fresh_dir("guard_hull_out");
   write_box_hull(dir);
-  const auto r = run_in(dir, scene(1e-4, kOneAtom, "fix g all brash/guard every 1 " + kHull + " max_penetration 0.1", 1000));
-  expect_stop_any(r, "1", R"(hull penetration: 0\.0017[0-9]* m = 10 % of its diameter 0\.01758 m > )"
-                          R"(max_hull_penetration_d 0\.1 \(centre outside the hull; hull frame x = 0\.0470)");
-  EXPECT_TRUE(r.screen.find("step 430:") != std::string::npos || r.screen.find("step 431:") != std::string::npos)
+  const auto r = run_in(
+      dir, scene(1e-4, kOneAtom, "fix g all brash/guard every 1 " + kHull + " max_penetration 0.1", 1000));
+  expect_stop_any(r, "1",
+                  R"(hull penetration: 0\.0017[0-9]* m = 10 % of its diameter 0\.01758 m > )"
+                  R"(max_hull_penetration_d 0\.1 \(centre outside the hull; hull frame x = 0\.0470)");
+  EXPECT_TRUE(r.screen.find("step 430:") != std::string::npos ||
+              r.screen.find("step 431:") != std::string::npos)
       << r.screen;
 }
 
-// The box hull as a real LIGGGHTS mesh moved by fix move/mesh (as brash-liggghts-run's scene does) and the guard's
-// hull on the same path. The atom is not integrated, so the mesh passes through it: first contact force when
-// the front face reaches x = -r (step 413), guard stop when it passes the centre (step 500/501).
+// The box hull as a real LIGGGHTS mesh moved by fix move/mesh (as brash-liggghts-run's scene does) and the
+// guard's hull on the same path. The atom is not integrated, so the mesh passes through it: first contact
+// force when the front face reaches x = -r (step 413), guard stop when it passes the centre (step 500/501).
 std::string moving_mesh_scene(bool restart, long steps) {
-  std::string s = "atom_style granular\natom_modify map array sort 0 0.0\nnewton off\ncommunicate single vel yes\nunits si\n";
+  std::string s =
+      "atom_style granular\natom_modify map array sort 0 0.0\nnewton off\ncommunicate single vel yes\nunits "
+      "si\n";
   s += restart ? "read_restart r.restart\n"
                : "boundary f f f\nregion reg block -0.1 0.1 -0.1 0.1 -0.1 0.1 units box\ncreate_box 1 reg\n";
-  s += "neighbor 0.002 bin\nneigh_modify delay 0\n" + brash::test::ice_contact_model("1.35") + "\ntimestep 1e-4\n";
+  s += "neighbor 0.002 bin\nneigh_modify delay 0\n" + brash::test::ice_contact_model("1.35") +
+       "\ntimestep 1e-4\n";
   if (!restart) s += kOneAtom + fmt::format("\nset group all diameter {} density 900\n", kD);
   s += "fix hull all mesh/surface/stress file box_hull.stl type 1 move -0.09 0 -0.05\n"
        "fix hullwall all wall/gran model hertz tangential history mesh n_meshes 1 meshes hull\n"
        "fix mv all move/mesh mesh hull linear 1 0 0\n"
-       "fix g all brash/guard every 1 " + kHull + "\n"
+       "fix g all brash/guard every 1 " +
+       kHull +
+       "\n"
        "thermo_style custom step f_hull[1]\nthermo 1\nthermo_modify norm no\n";
   s += fmt::format("run {}{}\n", steps, restart ? " upto" : "");
   if (!restart) s += "write_restart r.restart\n";
@@ -253,9 +264,9 @@ TEST(Guard, HullPositionAgreesWithMoveMeshAlsoAfterReadRestart) {
   const long contact = first_contact_step(whole.screen);
   EXPECT_GE(contact, 412);
   EXPECT_LE(contact, 413);
-  // 200 steps, write_restart, a new LIGGGHTS process reads it and continues to step 1000 (the runner's --resume):
-  // fix move/mesh restores its mesh and time, the guard uses the restored step counter; both must agree with the
-  // uninterrupted run.
+  // 200 steps, write_restart, a new LIGGGHTS process reads it and continues to step 1000 (the runner's
+  // --resume): fix move/mesh restores its mesh and time, the guard uses the restored step counter; both must
+  // agree with the uninterrupted run.
   ASSERT_EQ(run_in(dir, moving_mesh_scene(false, 200), 1, "a.lmp").status, 0);
   const auto resumed = run_in(dir, moving_mesh_scene(true, 1000), 1, "b.lmp");
   expect_hull_stop_at_500(resumed);
@@ -266,18 +277,21 @@ TEST(Guard, QuietWhenTheHullPassesBeside) {
   // The hull passes 3 cm beside the atom (y offset 0.04 - 0.02 = 0.02 m > r): the run completes.
   const auto dir = fresh_dir("guard_hull_quiet");
   write_box_hull(dir);
-  const auto r = run_in(dir, scene(1e-4, kOneAtom, "fix g all brash/guard every 1 hull box_hull.stl -0.09 0.04 -0.05 1 0 0",
-                                   1500));
+  const auto r = run_in(
+      dir,
+      scene(1e-4, kOneAtom, "fix g all brash/guard every 1 hull box_hull.stl -0.09 0.04 -0.05 1 0 0", 1500));
   EXPECT_EQ(r.status, 0) << r.screen;
   EXPECT_EQ(r.screen.find("ERROR"), std::string::npos) << r.screen;
 }
 
 TEST(Guard, HullMustBeClosedAndReadable) {
   const auto dir = fresh_dir("guard_hull_bad");
-  brash::hull::write_stl(dir / "band.stl", brash::hull::clip_band(brash::hull::test::box(0.04, 0.04, 0.1), 0.04, 0.06));
+  brash::hull::write_stl(dir / "band.stl",
+                         brash::hull::clip_band(brash::hull::test::box(0.04, 0.04, 0.1), 0.04, 0.06));
   auto r = run_in(dir, scene(1e-4, kOneAtom, "fix g all brash/guard every 1 hull band.stl 0 0 0 1 0 0", 10));
   EXPECT_NE(r.status, 0);
-  EXPECT_NE(r.screen.find("ERROR: fix brash/guard: hull band.stl is not a closed surface"), std::string::npos) << r.screen;
+  EXPECT_NE(r.screen.find("ERROR: fix brash/guard: hull band.stl is not a closed surface"), std::string::npos)
+      << r.screen;
   r = run_in(dir, scene(1e-4, kOneAtom, "fix g all brash/guard every 1 hull none.stl 0 0 0 1 0 0", 10));
   EXPECT_NE(r.status, 0);
   EXPECT_NE(r.screen.find("ERROR: fix brash/guard: hull none.stl: "), std::string::npos) << r.screen;
@@ -299,12 +313,16 @@ const std::vector<BadGuardArgs> kBadArgs = {
     {"zmax_not_a_number", "every 1 zmax high", "keyword 'zmax' expects a number, got 'high'"},
     {"ke_max_negative", "every 1 ke_max -1", "keyword 'ke_max' must be > 0, got -1"},
     {"ke_max_nan", "every 1 ke_max nan", "keyword 'ke_max' expects a finite number, got 'nan'"},
-    {"poisson_impossible", "every 1 youngs 5e6 poisson 0.7", "keyword 'poisson' must be in (-1, 0.5), got 0.7"},
+    {"poisson_impossible", "every 1 youngs 5e6 poisson 0.7",
+     "keyword 'poisson' must be in (-1, 0.5), got 0.7"},
     {"density_without_youngs", "every 1 density 900", "'density' and 'rmin' belong to the time-step check"},
     {"hull_too_few_values", "every 1 hull h.stl 0 0 0", "keyword 'hull' needs 7 value(s)"},
-    {"hull_velocity_not_a_number", "every 1 hull h.stl 0 0 0 fast 0 0", "keyword 'hull' expects a number, got 'fast'"},
-    {"max_penetration_without_hull", "every 1 max_penetration 0.5", "'max_penetration' belongs to the hull check"},
-    {"max_penetration_zero", "every 1 hull h.stl 0 0 0 1 0 0 max_penetration 0", "keyword 'max_penetration' must be > 0"},
+    {"hull_velocity_not_a_number", "every 1 hull h.stl 0 0 0 fast 0 0",
+     "keyword 'hull' expects a number, got 'fast'"},
+    {"max_penetration_without_hull", "every 1 max_penetration 0.5",
+     "'max_penetration' belongs to the hull check"},
+    {"max_penetration_zero", "every 1 hull h.stl 0 0 0 1 0 0 max_penetration 0",
+     "keyword 'max_penetration' must be > 0"},
 };
 
 class GuardArgs : public ::testing::TestWithParam<BadGuardArgs> {};
