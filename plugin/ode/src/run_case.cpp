@@ -9,13 +9,16 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <unordered_map>
 
 #include "brash/case.hpp"
 #include "brash/error.hpp"
+#include "brash/guard.hpp"
 #include "brash/hull/mesh.hpp"
+#include "brash/hull/proximity.hpp"
 #include "brash/ode/restart.hpp"
 #include "brash/packing.hpp"
 #include "brash/run_layout.hpp"
@@ -25,6 +28,12 @@ namespace brash::ode {
 namespace fs = std::filesystem;
 
 namespace {
+
+// A run-time guard stopped the run (guard::stop_message).
+class GuardStop : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 // Line number (1-based) of each data row of a packing CSV (rows after '#' lines and the header).
 std::vector<int> packing_lines(const fs::path& file) {
@@ -228,6 +237,19 @@ RunResult run_case(const RunOptions& cli_options) {
                 0.5 * c.channel.width_m);
   auto mesh = hull::read_mesh(c.hull.file);
   hull::require_plausible_units(mesh, c.hull.file, c.hull.draft_m, c.hull.lpp_m);
+  // Run-time guards (brash::guard, docs/stability.md): the limits of the LIGGGHTS scene box of the same case
+  // (from the full hull's extents) and the hull penetration query on the full closed hull, even when the
+  // contact mesh is a band (a piece slipping under the band ends up inside the full hull).
+  double fx0 = 1e300, fx1 = -1e300, fz0 = 1e300, fz1 = -1e300;
+  for (const auto& v : mesh.vertices) {
+    fx0 = std::min(fx0, v.x()), fx1 = std::max(fx1, v.x());
+    fz0 = std::min(fz0, v.z()), fz1 = std::max(fz1, v.z());
+  }
+  const guard::Limits limits =
+      guard::limits_for_case(c, guard::domain_box(c, fx0, fx1, fz0, fz1, c.run.duration_s));
+  std::unique_ptr<hull::Proximity> hull_query;
+  const bool hull_closed = hull::check_mesh(mesh).closed;
+  if (limits.max_hull_penetration_d && hull_closed) hull_query = std::make_unique<hull::Proximity>(mesh);
   if (c.hull.band_m) mesh = hull::clip_band(mesh, c.hull.draft_m - (*c.hull.band_m)[0], c.hull.draft_m + (*c.hull.band_m)[1]);
   std::vector<double> verts;
   std::vector<dTriIndex> tris;
@@ -328,6 +350,17 @@ RunResult run_case(const RunOptions& cli_options) {
                       to_string(c.fluid.model), to_string(c.fluid.treatment), meta["implicit_realisation"].get<std::string>(),
                       to_string(c.fluid.ca_table), c.fluid.drag_coefficient, to_string(c.fluid.drag_law)));
     logln(fmt::format("run dir {}", run_dir.string()));
+    logln(
+        fmt::format("guards every {} steps: NaN/Inf; box x [{:.4g}, {:.4g}] y [{:.4g}, {:.4g}] z [{:.4g}, "
+                    "{:.4g}] m; zmax {:.4g} m; "
+                    "ke_max {:.4g} J; hull penetration {}; (no dt check: ODE contacts are constraint joints, "
+                    "see docs/stability.md)",
+                    c.guards.every_steps, (*limits.box)[0], (*limits.box)[1], (*limits.box)[2],
+                    (*limits.box)[3], (*limits.box)[4], (*limits.box)[5], *limits.z_max_m, *limits.ke_max_J,
+                    hull_query ? fmt::format("> {:g} d (full closed hull, {} triangles)",
+                                             *limits.max_hull_penetration_d, hull_query->triangles())
+                               : std::string(hull_closed ? "off (guards.max_hull_penetration_d = 0)"
+                                                         : "off (hull not closed)")));
 
     // Optional settling with the hull parked (on resume the restart file holds the state after it).
     const long settle_steps = o.resume ? 0 : std::lround(o.settle_s / st.dt_s);
@@ -427,12 +460,33 @@ RunResult run_case(const RunOptions& cli_options) {
       meta["steps_done"] = step;
       run::write_meta(run_dir, meta);
     };
-    if (!o.resume) dump(0);
+    // The guards on every sphere (lowest id first); a stop is a GuardStop naming the step, the piece and the
+    // cause. The hull's STL frame origin is the hull body's position lowered by the draft (body frame:
+    // waterline z = 0).
+    auto check_guards = [&](long step) {
+      guard::HullNow hull_now{hull_query.get(), w.hull_position() - Vec3(0, 0, c.hull.draft_m)};
+      for (std::size_t i = 0; i < w.size(); ++i) {
+        guard::Piece p;
+        p.x_m = w.position(i);
+        p.v_m_s = w.velocity(i);
+        p.omega_rad_s = w.angular_velocity(i);
+        p.radius_m = w.radius(i);
+        p.mass_kg = w.mass(i);
+        if (const auto cause = guard::check_piece(p, limits, hull_query ? &hull_now : nullptr))
+          throw GuardStop(
+              guard::stop_message(step, double(step) * st.dt_s, static_cast<long>(i) + 1, *cause));
+      }
+    };
+    if (!o.resume) {
+      check_guards(0);
+      dump(0);
+    }
     const auto loop0 = clock::now();
     const long ps_loop0 = w.stats().particle_steps;
     auto last_print = loop0;
     for (long k = k0 + 1; k <= steps; ++k) {
       w.step();
+      if (k % c.guards.every_steps == 0 || k == steps) check_guards(k);
       const Vec3& f = w.hull_force();
       if (!f.allFinite())
         throw std::runtime_error(fmt::format("non-finite hull force at t = {} s (step {})", double(k) * st.dt_s, k));
@@ -496,7 +550,10 @@ RunResult run_case(const RunOptions& cli_options) {
                       c.run.window_s[0], c.run.window_s[1], res.mean_fx_window_N));
     flush(steps, res.wall_time_s - wall_before);
   } catch (const std::exception& e) {
+    // Outputs stay consistent: hull_force.csv holds the rows up to the stop, particles/ the snapshots written
+    // before it, meta.json says failed with the reason (a guard stop: step, piece and cause).
     log += std::string("error: ") + e.what() + "\n";
+    if (o.progress) fmt::print(stderr, "\n[brash-ode] stopped: {}\n", e.what());
     meta["status"] = "failed";
     meta["reason"] = e.what();
     meta["wall_time_s"] = std::chrono::duration<double>(clock::now() - t_start).count();

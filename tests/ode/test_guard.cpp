@@ -1,0 +1,138 @@
+// brash-ode's run-time guards (docs/stability.md, "Run-time guards") on the YADE smoke case (720 spheres of
+// 35 mm ice at the JBC bow, the contact hull a waterline band): each guard stops the run with
+// "guard: step N (t = T s): piece ID: cause" on stderr and as meta.json's reason, status "failed", and the
+// outputs up to the stop readable; a normal run trips none of them.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kRoot = fs::temp_directory_path() / ("brash_ode_guard_" + std::to_string(::getpid()));
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// A copy of the smoke case in kRoot/name with `edit` applied to case.yaml and extra packing rows appended.
+fs::path make_case(const std::string& name, const std::string& yaml_from, const std::string& yaml_to,
+                   const std::string& extra_rows) {
+  const fs::path dir = kRoot / name / "case";
+  fs::create_directories(dir);
+  for (const char* f : {"case.yaml", "packing.csv", "packing.json"})
+    fs::copy_file(fs::path(BRASH_SMOKE_CASE) / f, dir / f, fs::copy_options::overwrite_existing);
+  std::string yaml = slurp(dir / "case.yaml");
+  if (!yaml_from.empty()) {
+    const auto at = yaml.find(yaml_from);
+    EXPECT_NE(at, std::string::npos) << yaml_from;
+    if (at != std::string::npos) yaml.replace(at, yaml_from.size(), yaml_to);
+  }
+  std::ofstream(dir / "case.yaml") << yaml;
+  std::ofstream(dir / "packing.csv", std::ios::app) << extra_rows;
+  return dir;
+}
+
+struct Result {
+  int exit_code;
+  std::string err, meta;
+  fs::path run;
+};
+
+Result run(const fs::path& case_dir, const std::string& duration) {
+  const fs::path out = case_dir.parent_path() / "run";
+  const fs::path err = case_dir.parent_path() / "stderr.txt";
+  const std::string cmd = std::string("'") + BRASH_ODE_EXE + "' '" + case_dir.string() + "' --out '" +
+                          out.string() + "' --duration " + duration + " --no-progress > /dev/null 2> '" +
+                          err.string() + "'";
+  const int st = std::system(cmd.c_str());
+  return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, slurp(err), slurp(out / "meta.json"), out};
+}
+
+// The stop names the step (returned; -1 if missing), the piece and the cause, on stderr and in meta.json;
+// the outputs stay readable.
+long expect_stop(const Result& r, const std::string& piece, const std::string& cause) {
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.meta.find("\"status\": \"failed\""), std::string::npos) << r.meta;
+  const std::regex re("guard: step ([0-9]+) \\(t = ([0-9.e-]+) s\\): piece " + piece + ": " + cause);
+  std::smatch m;
+  EXPECT_TRUE(std::regex_search(r.err, re)) << r.err;
+  EXPECT_TRUE(std::regex_search(r.meta, m, re)) << r.meta;
+  EXPECT_EQ(slurp(r.run / "hull_force.csv").rfind("t_s,fx_N,fy_N,fz_N\n", 0), 0u);
+  EXPECT_NE(slurp(r.run / "log.txt").find("error: guard: step"), std::string::npos);
+  return m.size() > 1 ? std::stol(m[1]) : -1;  // the step
+}
+
+class OdeGuard : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() { fs::remove_all(kRoot); }
+  static void TearDownTestSuite() { fs::remove_all(kRoot); }
+};
+
+}  // namespace
+
+TEST_F(OdeGuard, NormalRunTripsNoGuard) {
+  const auto r = run(make_case("normal", "", "", ""), "0.2");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.meta.find("\"status\": \"complete\""), std::string::npos);
+  EXPECT_NE(slurp(r.run / "log.txt").find("hull penetration > 0.5 d (full closed hull"), std::string::npos);
+}
+
+TEST_F(OdeGuard, PieceSlippingUnderTheBandIsCaughtInsideTheFullHull) {
+  // A piece 30 cm down, 20 cm ahead of the channel start: below the contact band (down to 15 cm), so the band
+  // never touches it; the bulb sweeps over it and its centre ends up inside the full hull.
+  const auto r = run(make_case("under_band", "", "", "721,0.2,0,-0.3,0.035\n"), "0.4");
+  const long step = expect_stop(r, "721",
+                                R"(hull penetration: 0\.0[0-9]+ m = [0-9]+ % of its diameter 0\.035 m > )"
+                                R"(max_hull_penetration_d 0\.5 \(centre inside the hull)");
+  EXPECT_GT(step, 0);
+  EXPECT_EQ(step % 10, 0);  // guards.every_steps
+}
+
+TEST_F(OdeGuard, HullOverlapAboveTheCaseThreshold) {
+  // guards.max_hull_penetration_d = 1e-4: the first real contact of the bow with the ice is too deep. The
+  // hull starts 12 cm further back than in the smoke case, clear of the ice (there the stem already touches a
+  // piece at t = 0, by 17 % of its diameter).
+  const auto dir =
+      make_case("threshold", "run:", "guards:\n  max_hull_penetration_d: 1.0e-4\n  every_steps: 2\nrun:", "");
+  std::string yaml = slurp(dir / "case.yaml");
+  yaml.replace(yaml.find("start_x_m: -7.03"), 16, "start_x_m: -7.15");
+  std::ofstream(dir / "case.yaml") << yaml;
+  const long step = expect_stop(run(dir, "0.3"), "[0-9]+",
+                                R"(hull penetration: [0-9.e-]+ m = [0-9]+ % of its diameter 0\.0[0-9]+ m > )"
+                                R"(max_hull_penetration_d 0\.0001 \(centre outside the hull)");
+  EXPECT_EQ(step % 2, 0);
+  EXPECT_GT(step, 0);
+}
+
+TEST_F(OdeGuard, RunawayKineticEnergy) {
+  // Explicit added mass with the text's Ca_z = 2 on reversal: m_a / m = 2.2 > 1 diverges (docs/stability.md);
+  // ke_max is the largest piece (40.25 mm) at 5 m/s.
+  const auto e = make_case("ke", "treatment: implicit", "treatment: explicit", "");
+  std::string yaml = slurp(e / "case.yaml");
+  yaml.replace(yaml.find("ca_table: table1"), 16, "ca_table: text");
+  std::ofstream(e / "case.yaml") << yaml;
+  const long step =
+      expect_stop(run(e, "0.2"), "[0-9]+", R"(runaway kinetic energy: [0-9.e+]+ J > ke_max = 1\.428 J)");
+  EXPECT_GT(step, 0);
+}
+
+TEST_F(OdeGuard, PieceOutsideTheDomainAndAboveTheWater) {
+  // The domain box's floor is 0.48 m down and zmax 5 ice thicknesses (0.35 m) up.
+  long step = expect_stop(run(make_case("box", "", "", "721,0.1,0,-0.6,0.035\n"), "0.1"), "721",
+                          R"(left the box: z = -0\.6 < zlo = -0\.4812[0-9]* \(m\))");
+  EXPECT_EQ(step, 0);  // checked before the first step
+  step = expect_stop(run(make_case("zmax", "", "", "721,0.1,0,0.4,0.035\n"), "0.1"), "721",
+                     R"(above zmax: z = 0\.4 > 0\.35 m \(jumped out of the water\))");
+  EXPECT_EQ(step, 0);
+}
