@@ -113,6 +113,14 @@ def main(scene_file):
     hf = open(hf_path + ".part", "w")
     hf.write("t_s,fx_N,fy_N,fz_N\n")
     index_rows = ["step,t_s,file,hull_x_m"]
+    write_atomic(os.path.join(run_dir, "particles", "index.csv"), index_rows[0] + "\n")
+
+    def close_outputs():
+        """A stopped run leaves hull_force.csv with the rows written so far (the snapshots and index.csv are
+        always complete files); brash-yade-run marks meta.json failed."""
+        if not hf.closed:
+            hf.close()
+            os.replace(hf_path + ".part", hf_path)
     hull_probe = hull_ids[0]
 
     def hull_force():
@@ -139,8 +147,29 @@ def main(scene_file):
         index_rows.append("%d,%.9g,%s,%.9g" % (step, t, name, s["hull_start_x_m"] + U * t))
         write_atomic(os.path.join(run_dir, "particles", "index.csv"), "\n".join(index_rows) + "\n")
 
+    # Run-time guards (brash::guard through brash_yade.Guard, the checks of the LIGGGHTS and ODE paths): every
+    # guards.every_steps iterations, on the state of that iteration (before NewtonIntegrator, like dump()). A stop
+    # pauses YADE; the loop below then closes the outputs and raises with the guard's message.
+    g = s.get("guards")
+    guard = None
+    stop = {"message": None}
+    if g:
+        import brash_yade
+        guard = brash_yade.Guard(fluid.radius, fluid.mass, box=g["box"], z_max=g["z_max_m"], ke_max=g["ke_max_J"],
+                                 max_hull_penetration_d=g["max_hull_penetration_d"], hull_stl=g["hull_stl"],
+                                 hull_origin=g["hull_origin_m"], hull_velocity=g["hull_velocity_m_s"])
+        log("guards every %d steps: NaN/Inf, box, zmax %.4g m, ke_max %.4g J, hull penetration %s, dt vs contact "
+            "stiffness" % (g["every_steps"], g["z_max_m"], g["ke_max_J"],
+                           ("> %g d" % g["max_hull_penetration_d"]) if guard.has_hull else "off"))
+
+    def guard_check():
+        if stop["message"] is None:
+            stop["message"] = guard.check(states, O.iter, O.iter * dt)
+            if stop["message"] is not None:
+                O.pause()
+
     import __main__
-    __main__._brash_hull_force, __main__._brash_dump = hull_force, dump
+    __main__._brash_hull_force, __main__._brash_dump, __main__._brash_guard = hull_force, dump, guard_check
 
     collider = InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Facet_Aabb(), Bo1_Wall_Aabb()],
                                      avoidSelfInteractionMask=2, label="collider")
@@ -156,12 +185,21 @@ def main(scene_file):
         PyRunner(command="_brash_dump()", iterPeriod=dump_every, initRun=True, label="dump"),
         NewtonIntegrator(damping=0, gravity=(0, 0, 0), label="newton"),
     ]
+    if guard is not None:
+        O.engines = O.engines[:-2] + [PyRunner(command="_brash_guard()", iterPeriod=g["every_steps"], initRun=True,
+                                               label="guard")] + O.engines[-2:]
     check_engine_order(O)
     O.dt = dt
     pwave = _utils.PWaveTimeStep()
     log("dt = %.3g s (%.1f %% of the P-wave time step %.3g s), %d steps, output every %d, dump every %d"
         % (dt, 100 * dt / pwave, pwave, steps, out_every, dump_every))
+    if guard is not None:  # names the piece; YADE's P-wave limit below is a little stricter still
+        msg = guard.check_timestep(dt, E, nu, g["max_dt_fraction"])
+        if msg is not None:
+            close_outputs()
+            raise RuntimeError(msg)
     if dt > pwave:
+        close_outputs()
         raise RuntimeError("dt %.3g s exceeds YADE's P-wave time step %.3g s" % (dt, pwave))
 
     bench_steps = int(os.environ.get("BRASH_YADE_BENCH_STEPS", "0"))
@@ -180,6 +218,11 @@ def main(scene_file):
         O.run(k, True)
         done += k
         hf.flush()
+        if stop["message"] is not None:
+            # Outputs consistent at the stop: hull_force.csv with the rows written so far, the snapshots and
+            # particles/index.csv as they are; brash-yade-run marks meta.json failed with this message.
+            close_outputs()
+            raise RuntimeError(stop["message"])
         el = time.time() - t_start
         if el - last_print >= 5.0 or done == total:
             last_print = el

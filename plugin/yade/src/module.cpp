@@ -3,12 +3,19 @@
 // a YADE PyRunner (plugin/yade/py/brash_yade_scene.py) that reads the spheres each step and calls
 // Fluid.correction() here; the physics is the same compiled code LIGGGHTS and ODE call.
 //
-// Also exposes the single-sphere reference integrator and the closed forms, so the YADE tests compare
-// against the same oracle as the LIGGGHTS tests, in the same process.
+// Also exposes the run-time guards (Guard: brash::guard's per-piece checks and the hull penetration query)
+// and the single-sphere reference integrator and the closed forms, so the YADE tests compare against the same
+// oracle as the LIGGGHTS tests, in the same process.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <array>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -16,6 +23,9 @@
 #include "brash/core/fluid.hpp"
 #include "brash/core/params.hpp"
 #include "brash/core/reference.hpp"
+#include "brash/guard.hpp"
+#include "brash/hull/mesh.hpp"
+#include "brash/hull/proximity.hpp"
 
 namespace py = pybind11;
 using namespace brash::core;
@@ -170,6 +180,90 @@ class Fluid {
   py::array_t<double> fraction_{0}, ca_{std::vector<py::ssize_t>{0, 3}};
 };
 
+// Run-time guards (brash::guard, the checks the LIGGGHTS fix brash/guard and brash-ode call): a PyRunner
+// calls check() every N iterations on the ice spheres' YADE State objects (same order as the Fluid
+// adapter's).
+class Guard {
+ public:
+  // box: (xlo, xhi, ylo, yhi, zlo, zhi) or empty; z_max / ke_max / max_hull_penetration_d: None = off;
+  // hull_stl: the FULL closed hull in its STL frame ("" = no hull check), whose origin is at hull_origin at
+  // t = 0 and moves at hull_velocity (the facets' velocity in the scene).
+  Guard(const Array& radius, const Array& mass, const std::vector<double>& box, std::optional<double> z_max,
+        std::optional<double> ke_max, std::optional<double> max_hull_penetration_d,
+        const std::string& hull_stl, const std::array<double, 3>& hull_origin,
+        const std::array<double, 3>& hull_velocity)
+      : origin_(hull_origin[0], hull_origin[1], hull_origin[2]),
+        velocity_(hull_velocity[0], hull_velocity[1], hull_velocity[2]) {
+    const py::ssize_t n = radius.ndim() == 1 ? radius.shape(0) : -1;
+    const double* r = vec_n(radius, n, "radius");
+    const double* m = vec_n(mass, n, "mass");
+    radius_.assign(r, r + n);
+    mass_.assign(m, m + n);
+    if (!box.empty()) {
+      if (box.size() != 6) throw std::invalid_argument("Guard: box needs 6 values (xlo xhi ylo yhi zlo zhi)");
+      limits_.box = brash::guard::Box{box[0], box[1], box[2], box[3], box[4], box[5]};
+    }
+    limits_.z_max_m = z_max;
+    limits_.ke_max_J = ke_max;
+    if (max_hull_penetration_d && !hull_stl.empty()) {
+      hull_ = std::make_unique<brash::hull::Proximity>(brash::hull::read_mesh(hull_stl));
+      if (!hull_->closed())
+        throw std::invalid_argument("Guard: " + hull_stl +
+                                    " is not a closed surface (the hull check needs the full hull)");
+      limits_.max_hull_penetration_d = max_hull_penetration_d;
+    }
+  }
+
+  // The stop message of the first offending sphere (lowest index), or None. `states` as for Fluid.apply.
+  std::optional<std::string> check(const py::list& states, long step, double t) const {
+    if (static_cast<std::size_t>(py::len(states)) != radius_.size())
+      throw std::invalid_argument("Guard.check: states and radius must have the same length");
+    const py::str s_pos("pos"), s_vel("vel"), s_ang("angVel");
+    brash::guard::HullNow hull{hull_.get(), origin_ + velocity_ * t};
+    for (std::size_t i = 0; i < radius_.size(); ++i) {
+      const py::handle st = PyList_GET_ITEM(states.ptr(), static_cast<py::ssize_t>(i));
+      double x[3], v[3], w[3];
+      read3(st.attr(s_pos), x);
+      read3(st.attr(s_vel), v);
+      read3(st.attr(s_ang), w);
+      brash::guard::Piece p;
+      p.x_m = Vec3(x[0], x[1], x[2]);
+      p.v_m_s = Vec3(v[0], v[1], v[2]);
+      p.omega_rad_s = Vec3(w[0], w[1], w[2]);
+      p.radius_m = radius_[i];
+      p.mass_kg = mass_[i];
+      if (auto cause = brash::guard::check_piece(p, limits_, hull_ ? &hull : nullptr))
+        return brash::guard::stop_message(step, t, static_cast<long>(i) + 1, *cause);
+    }
+    return std::nullopt;
+  }
+
+  // The contact time-step check on the sphere with the smallest Rayleigh time (its own radius and density).
+  std::optional<std::string> check_timestep(double dt, double youngs, double poisson,
+                                            double max_fraction) const {
+    std::size_t worst = 0;
+    double tr_min = std::numeric_limits<double>::infinity(), rho_worst = 0;
+    for (std::size_t i = 0; i < radius_.size(); ++i) {
+      const double rho = mass_[i] / (4.0 / 3.0 * std::numbers::pi * std::pow(radius_[i], 3));
+      const double tr = brash::guard::rayleigh_time_s(radius_[i], rho, youngs, poisson);
+      if (tr < tr_min) tr_min = tr, worst = i, rho_worst = rho;
+    }
+    if (radius_.empty()) return std::nullopt;
+    if (auto cause =
+            brash::guard::check_timestep(dt, radius_[worst], rho_worst, youngs, poisson, max_fraction))
+      return brash::guard::stop_message(0, 0.0, static_cast<long>(worst) + 1, *cause);
+    return std::nullopt;
+  }
+
+  bool has_hull() const { return hull_ != nullptr; }
+
+ private:
+  std::vector<double> radius_, mass_;
+  brash::guard::Limits limits_;
+  std::unique_ptr<brash::hull::Proximity> hull_;
+  Vec3 origin_, velocity_;
+};
+
 }  // namespace
 
 PYBIND11_MODULE(brash_yade, mod) {
@@ -200,6 +294,22 @@ PYBIND11_MODULE(brash_yade, mod) {
       .def("__len__", &Fluid::size)
       .def_property_readonly("model", [](const Fluid& f) { return to_string(f.params().model); })
       .def_property_readonly("treatment", [](const Fluid& f) { return to_string(f.params().treatment); });
+
+  py::class_<Guard>(mod, "Guard")
+      .def(py::init<const Array&, const Array&, const std::vector<double>&, std::optional<double>,
+                    std::optional<double>, std::optional<double>, const std::string&,
+                    const std::array<double, 3>&, const std::array<double, 3>&>(),
+           py::arg("radius"), py::arg("mass"), py::arg("box") = std::vector<double>{},
+           py::arg("z_max") = py::none(), py::arg("ke_max") = py::none(),
+           py::arg("max_hull_penetration_d") = py::none(), py::arg("hull_stl") = "",
+           py::arg("hull_origin") = std::array<double, 3>{0, 0, 0},
+           py::arg("hull_velocity") = std::array<double, 3>{0, 0, 0})
+      .def("check", &Guard::check, py::arg("states"), py::arg("step"), py::arg("t"),
+           "stop message 'guard: step N (t = T s): piece ID: cause' of the first offending sphere, or None")
+      .def("check_timestep", &Guard::check_timestep, py::arg("dt"), py::arg("youngs"), py::arg("poisson"),
+           py::arg("max_fraction"),
+           "stop message when dt exceeds max_fraction of the smallest Rayleigh time, or None")
+      .def_property_readonly("has_hull", &Guard::has_hull);
 
   // Single-sphere oracle (velocity Verlet, gravity as an engine force) and closed forms.
   py::class_<ReferenceSphere>(mod, "ReferenceSphere")

@@ -4,6 +4,8 @@
 // hull.stl, scene.json), launches `yade -n -j<N> -x brash_yade_scene.py scene.json` in the run directory
 // with brash_yade on PYTHONPATH, mirrors its output to log.txt with progress on the terminal, fills in
 // meta.json and calls brash-post when it was built.
+// The run-time guards (brash::guard) are checked by the scene every guards.every_steps iterations; a stop
+// ends the run with "[brash-yade] ERROR: guard: step N (t = T s): piece ID: cause", recorded in meta.json.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
@@ -16,6 +18,7 @@
 
 #include "brash/case.hpp"
 #include "brash/error.hpp"
+#include "brash/guard.hpp"
 #include "brash/hull/mesh.hpp"
 #include "brash/packing.hpp"
 #include "brash/run_layout.hpp"
@@ -56,7 +59,7 @@ EngineResult run_yade(const fs::path& run_dir, int threads) {
       line.erase(line.find_last_not_of("\r\n") + 1);
       std::fprintf(stderr, "\r%s   ", line.c_str());
     } else if (line.rfind("[brash-yade] ERROR", 0) == 0 && res.error.empty()) {
-      res.error = line.substr(19, line.find('\n') - 19);
+      res.error = line.substr(20, line.find('\n') - 20);  // after "[brash-yade] ERROR: "
     } else if (line.rfind("[brash-yade]", 0) == 0) {
       std::fprintf(stderr, "\n%s", line.c_str());
     }
@@ -97,6 +100,18 @@ int main(int argc, char** argv) {
     const auto spheres = brash::read_packing_csv(c.ice.packing_file);
     auto mesh = brash::hull::read_mesh(c.hull.file);
     brash::hull::require_plausible_units(mesh, c.hull.file, c.hull.draft_m, c.hull.lpp_m);
+    // Run-time guards (brash::guard, docs/stability.md): the LIGGGHTS scene box of the same case (extents of
+    // the full hull) and the hull penetration check on the full closed hull, also when the contact hull is a
+    // band.
+    const brash::hull::Mesh full_mesh = mesh;
+    const bool full_closed = brash::hull::check_mesh(full_mesh).closed;
+    double fx0 = 1e300, fx1 = -1e300, fz0 = 1e300, fz1 = -1e300;
+    for (const auto& v : full_mesh.vertices) {
+      fx0 = std::min(fx0, v.x()), fx1 = std::max(fx1, v.x());
+      fz0 = std::min(fz0, v.z()), fz1 = std::max(fz1, v.z());
+    }
+    const auto limits =
+        brash::guard::limits_for_case(c, brash::guard::domain_box(c, fx0, fx1, fz0, fz1, c.run.duration_s));
     if (c.hull.band_m)
       mesh = brash::hull::clip_band(mesh, c.hull.draft_m - (*c.hull.band_m)[0], c.hull.draft_m + (*c.hull.band_m)[1]);
 
@@ -106,6 +121,25 @@ int main(int argc, char** argv) {
     fs::create_directories(run_dir / "restart");
     brash::run::write_atomic(run_dir / "case.yaml", brash::dump_case_yaml(c));
     brash::hull::write_stl(run_dir / "hull.stl", mesh);
+    std::string guard_hull;
+    if (limits.max_hull_penetration_d && full_closed) {
+      guard_hull = c.hull.band_m ? "hull_full.stl" : "hull.stl";
+      if (c.hull.band_m) brash::hull::write_stl(run_dir / guard_hull, full_mesh);
+    } else if (!full_closed) {
+      std::cerr << "[brash-yade] note: " << c.hull.file.string()
+                << " is not a closed surface: the hull penetration guard is off\n";
+    }
+    const nlohmann::json guards = {
+        {"every_steps", c.guards.every_steps},
+        {"box", *limits.box},
+        {"z_max_m", *limits.z_max_m},
+        {"ke_max_J", *limits.ke_max_J},
+        {"max_hull_penetration_d",
+         guard_hull.empty() ? nlohmann::json(nullptr) : nlohmann::json(*limits.max_hull_penetration_d)},
+        {"hull_stl", guard_hull.empty() ? std::string() : fs::absolute(run_dir / guard_hull).string()},
+        {"hull_origin_m", {c.hull.start_x_m, 0.0, -c.hull.draft_m}},
+        {"hull_velocity_m_s", {c.ship.speed_m_s, 0.0, 0.0}},
+        {"max_dt_fraction", brash::kMaxTimestepOverRayleigh}};
     const nlohmann::json scene = {
         {"case", c.name},
         {"packing_file", c.ice.packing_file.string()},
@@ -134,7 +168,8 @@ int main(int argc, char** argv) {
         {"dt_s", c.run.timestep_s},
         {"duration_s", c.run.duration_s},
         {"output_interval_s", c.run.output_interval_s},
-        {"dump_interval_s", c.run.dump_interval_s}};
+        {"dump_interval_s", c.run.dump_interval_s},
+        {"guards", guards}};
     brash::run::write_atomic(run_dir / "scene.json", scene.dump(1) + "\n");
     if (prepare_only) {
       std::cout << run_dir.string() << "\n";
