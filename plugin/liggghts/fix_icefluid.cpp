@@ -154,7 +154,7 @@ void FixIceFluid::compute(bool replay) {
   a.f_N = atom->f[0];
   a.state = state_[0];
   a.output = update->ntimestep % output_every_ == 0 ? output_[0] : nullptr;
-  a.mask = atom->mask;
+  a.mask = igroup == 0 ? nullptr : atom->mask;  // group "all": every atom, no per-atom mask test
   a.groupbit = groupbit;
   core::apply_kernel(params_, a, update->dt, replay);
 }

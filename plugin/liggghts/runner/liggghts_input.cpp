@@ -110,7 +110,10 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
   s += fmt::format("timestep {:.9g}\n", dt);
   // Hull: STL frame has the keel at z = 0 and x = 0 at the aft perpendicular.
   const double hull_x0 = c.hull.start_x_m;
-  s += fmt::format("fix hull all mesh/surface/stress file {} type 2 move {:.9g} 0 {:.9g} reference_point 0 0 0\n",
+  // curvature_tolerant: the lofted JBC has a few slivers (smallest angle 0.23 deg, at the stem and stern post) below
+  // LIGGGHTS' default acceptance angle (0.256 deg); they are valid triangles, so warn instead of refusing the mesh.
+  s += fmt::format("fix hull all mesh/surface/stress file {} type 2 move {:.9g} 0 {:.9g} curvature_tolerant yes "
+                   "reference_point 0 0 0\n",
                    opt.hull_file, hull_x0, -c.hull.draft_m);
   s += "fix hullwall all wall/gran model hertz tangential history mesh n_meshes 1 meshes hull\n";
   if (sp.symmetry_y)
