@@ -12,7 +12,7 @@ namespace {
 // kReplay and kMasked are hoisted out of the loop (template parameters, not per-sphere branches): the
 // normal step (no replay, group all) then costs only the physics. Scalars instead of small arrays keep
 // everything in registers.
-template <bool kDrag, bool kAddedMass, bool kImplicit, bool kReplay, bool kMasked>
+template <bool kDrag, bool kAddedMass, bool kImplicit, bool kReplay, bool kMasked, bool kSymXY>
 void kernel(const FluidParams& p, const KernelArrays& a, double dt_s) {
   constexpr double kPi = std::numbers::pi;
   const double rho = p.water_density_kg_m3;
@@ -93,7 +93,10 @@ void kernel(const FluidParams& p, const KernelArrays& a, double dt_s) {
         const double rho_vs = rho * vs;
         if constexpr (kImplicit) {
           sx = m / (m + rho_vs * cax);
-          sy = cay == cax ? sx : m / (m + rho_vs * cay);
+          if constexpr (kSymXY)
+            sy = sx;
+          else
+            sy = m / (m + rho_vs * cay);
           sz = m / (m + rho_vs * caz);
         } else {
           Fx -= rho_vs * cax * ax, Fy -= rho_vs * cay * ay, Fz -= rho_vs * caz * az;
@@ -110,7 +113,9 @@ void kernel(const FluidParams& p, const KernelArrays& a, double dt_s) {
     }
     f[2] = (f[2] + Fz) * sz;
     if (!replaying) {
-      st[0] = vx, st[1] = vy, st[2] = vz, st[3] = 1.0, st[4] = reversed ? 1.0 : 0.0;
+      // Implicit added mass alone never reads the horizontal velocity back (no drag, no lagged acceleration).
+      if constexpr (kDrag || !kImplicit) st[0] = vx, st[1] = vy;
+      st[2] = vz, st[3] = 1.0, st[4] = reversed ? 1.0 : 0.0;
       if constexpr (!kImplicit) st[5] = ax, st[6] = ay, st[7] = az;
     }
     if (a.output) {
@@ -121,22 +126,28 @@ void kernel(const FluidParams& p, const KernelArrays& a, double dt_s) {
   }
 }
 
-template <bool kDrag, bool kAddedMass, bool kImplicit>
+// Every row of the table has Ca_x = Ca_y (true for table1, text and uniform): one implicit scale serves both.
+bool symmetric_xy(const CaTable& t) {
+  for (const Vec3* c : {&t.above, &t.submerged, &t.submerged_reversed, &t.partial, &t.partial_reversed})
+    if (c->x() != c->y()) return false;
+  return true;
+}
+
+template <bool kDrag, bool kAddedMass, bool kImplicit, bool kSymXY>
 void dispatch_loop(const FluidParams& p, const KernelArrays& a, double dt_s, bool replay) {
   if (replay) {
-    if (a.mask) return kernel<kDrag, kAddedMass, kImplicit, true, true>(p, a, dt_s);
-    return kernel<kDrag, kAddedMass, kImplicit, true, false>(p, a, dt_s);
+    if (a.mask) return kernel<kDrag, kAddedMass, kImplicit, true, true, kSymXY>(p, a, dt_s);
+    return kernel<kDrag, kAddedMass, kImplicit, true, false, kSymXY>(p, a, dt_s);
   }
-  if (a.mask) return kernel<kDrag, kAddedMass, kImplicit, false, true>(p, a, dt_s);
-  return kernel<kDrag, kAddedMass, kImplicit, false, false>(p, a, dt_s);
+  if (a.mask) return kernel<kDrag, kAddedMass, kImplicit, false, true, kSymXY>(p, a, dt_s);
+  return kernel<kDrag, kAddedMass, kImplicit, false, false, kSymXY>(p, a, dt_s);
 }
 
 template <bool kDrag, bool kAddedMass>
 void dispatch_treatment(const FluidParams& p, const KernelArrays& a, double dt_s, bool replay) {
-  if (p.treatment == Treatment::Implicit)
-    dispatch_loop<kDrag, kAddedMass, true>(p, a, dt_s, replay);
-  else
-    dispatch_loop<kDrag, kAddedMass, false>(p, a, dt_s, replay);
+  if (p.treatment == Treatment::Explicit) return dispatch_loop<kDrag, kAddedMass, false, false>(p, a, dt_s, replay);
+  if (kAddedMass && symmetric_xy(p.ca)) return dispatch_loop<kDrag, kAddedMass, true, true>(p, a, dt_s, replay);
+  dispatch_loop<kDrag, kAddedMass, true, false>(p, a, dt_s, replay);
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 // Arrays are row-major and contiguous (LIGGGHTS' double** point at one block: pass x[0]).
 // Per-sphere state, kStateStride doubles owned by the engine (migrates and goes into restarts; a new
 // sphere's row must be all zero):
-//   [0..2] velocity used at the last evaluation   [3] 1 once evaluated
+//   [0..2] velocity used at the last evaluation (x, y only with drag or explicit)   [3] 1 once evaluated
 //   [4] 1 if the last evaluation saw a reversal     [5..7] acceleration used by the explicit treatment
 // With `replay` (start of a run), spheres that have a state re-evaluate their last step from it
 // (same position, same velocity, same reversal and acceleration) and keep the state: a restarted
