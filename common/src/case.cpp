@@ -4,11 +4,11 @@
 // line and key.
 #include "brash/case.hpp"
 
+#include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
-#include <fmt/format.h>
-
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -46,7 +46,10 @@ constexpr EnumText<Treatment> kTreatment[] = {{Treatment::Implicit, "implicit"},
                                               {Treatment::Explicit, "explicit"}};
 constexpr EnumText<DragLaw> kDragLaw[] = {{DragLaw::Constant, "constant"},
                                           {DragLaw::SchillerNaumann, "schiller_naumann"}};
-constexpr EnumText<CaTable> kCaTable[] = {{CaTable::Table1, "table1"}, {CaTable::Text, "text"}, {CaTable::Zero, "zero"}};
+constexpr EnumText<CaTable> kCaTable[] = {{CaTable::Table1, "table1"},
+                                          {CaTable::Text, "text"},
+                                          {CaTable::Zero, "zero"},
+                                          {CaTable::Uniform, "uniform"}};
 
 template <class E, std::size_t N>
 std::string_view text_of(const EnumText<E> (&table)[N], E v) {
@@ -62,6 +65,10 @@ std::string_view to_string(FluidModel v) { return text_of(kFluidModel, v); }
 std::string_view to_string(Treatment v) { return text_of(kTreatment, v); }
 std::string_view to_string(DragLaw v) { return text_of(kDragLaw, v); }
 std::string_view to_string(CaTable v) { return text_of(kCaTable, v); }
+std::string to_string(const CaTableSpec& v) {
+  if (v.table == CaTable::Uniform) return fmt::format("uniform {}", v.uniform_ca);
+  return std::string(to_string(v.table));
+}
 
 double h_m_for_ice_class(IceClass c) {
   switch (c) {
@@ -182,6 +189,35 @@ struct Reader {
       list += (list.empty() ? "" : " | ") + std::string(e.text);
     }
     fail(v, key, fmt::format("unknown value '{}' (one of: {})", v.Scalar(), list));
+  }
+
+  // fluid.ca_table: table1 | text | zero | "uniform <Ca>" with a finite Ca >= 0.
+  void ca_table(const YAML::Node& sec, const std::string& where, CaTableSpec& out) const {
+    const YAML::Node v = sec["ca_table"];
+    if (!v.IsDefined()) return;
+    const std::string key = join(where, "ca_table");
+    if (!v.IsScalar()) fail(v, key, "expected a text value");
+    const std::string& t = v.Scalar();
+    if (t.rfind("uniform", 0) == 0) {
+      const std::string rest = t.substr(7);
+      char* end = nullptr;
+      const double ca = rest.empty() || !std::isspace(static_cast<unsigned char>(rest[0]))
+                            ? std::nan("")
+                            : std::strtod(rest.c_str(), &end);
+      if (std::isnan(ca) || end == rest.c_str() ||
+          std::string_view(end).find_first_not_of(" \t") != std::string_view::npos || !std::isfinite(ca) ||
+          ca < 0)
+        fail(v, key, fmt::format("expected 'uniform <Ca>' with a finite Ca >= 0, got '{}'", t));
+      out = CaTableSpec::uniform(ca);
+      return;
+    }
+    CaTable named = CaTable::Table1;
+    try {
+      enumeration(sec, where, "ca_table", kCaTable, named);
+    } catch (const InputError& e) {
+      throw InputError(std::string(e.what()) + " (uniform takes a value: 'uniform 2')");
+    }
+    out = named;
   }
 
   void boolean(const YAML::Node& sec, const std::string& where, std::string_view k, bool& out) const {
@@ -327,7 +363,7 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
     r.enumeration(s, "fluid", "treatment", kTreatment, c.fluid.treatment);
     r.num(s, "fluid", "drag_coefficient", c.fluid.drag_coefficient, non_negative, ">= 0");
     r.enumeration(s, "fluid", "drag_law", kDragLaw, c.fluid.drag_law);
-    r.enumeration(s, "fluid", "ca_table", kCaTable, c.fluid.ca_table);
+    r.ca_table(s, "fluid", c.fluid.ca_table);
   }
   {  // run
     const auto s = r.section(root, "run", {"duration_s", "timestep_s", "output_interval_s",
@@ -514,7 +550,7 @@ std::string dump_case_yaml(const Case& c) {
   line("  ", "treatment", std::string(to_string(c.fluid.treatment)));
   line("  ", "drag_coefficient", num(c.fluid.drag_coefficient));
   line("  ", "drag_law", std::string(to_string(c.fluid.drag_law)));
-  line("  ", "ca_table", std::string(to_string(c.fluid.ca_table)));
+  line("  ", "ca_table", to_string(c.fluid.ca_table));
   o += "run:\n";
   line("  ", "duration_s", num(c.run.duration_s));
   line("  ", "timestep_s", num(c.run.timestep_s));

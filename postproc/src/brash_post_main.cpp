@@ -13,6 +13,9 @@
 #include <brash/post/particles.hpp>
 #include <brash/post/plots.hpp>
 #include <brash/post/report.hpp>
+#ifdef BRASH_POST_HAVE_STABILITY
+#include <brash/post/stability.hpp>
+#endif
 #ifdef BRASH_POST_HAVE_VTK
 #include <brash/post/paraview.hpp>
 #endif
@@ -115,6 +118,19 @@ int run_fsicr(const brash::FsicrParams& p, const std::string& ice_class) {
   return 0;
 }
 
+#ifdef BRASH_POST_HAVE_STABILITY
+// Stability verdict and measures of one run (docs/stability.md, "Engine stability map"): JSON on stdout and
+// in OUT (default RUN_DIR/stability.json).
+int run_stability(const fs::path& run_dir, const StabilityOptions& opt, fs::path out) {
+  const auto r = analyze_stability(run_dir, opt);
+  const auto text = stability_json(r).dump(2) + "\n";
+  if (out.empty()) out = run_dir / "stability.json";
+  brash::run::write_atomic(out, text);
+  fmt::print("{}", text);
+  return 0;
+}
+#endif
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -150,12 +166,38 @@ int main(int argc, char** argv) {
   compare->add_option("RUN_DIR", compare_runs, "run directories")->required()->check(CLI::ExistingDirectory);
   compare->add_option("--out", compare_out, "output folder")->capture_default_str();
 
+#ifdef BRASH_POST_HAVE_STABILITY
+  auto* stability = app.add_subcommand(
+      "stability",
+      "stability verdict of a run: how it ended, hull penetration, sphere overlap, escaped pieces, energy");
+  fs::path stability_run, stability_out;
+  StabilityOptions sopt;
+  double above_water = -1;
+  stability->add_option("RUN_DIR", stability_run, "run directory")->required()->check(CLI::ExistingDirectory);
+  stability->add_option("--out", stability_out, "JSON file (default RUN_DIR/stability.json)");
+  stability->add_option("--above-water-m", above_water,
+                        "count pieces whose centre is higher above the water "
+                        "(default 2 ice thicknesses)");
+  stability->add_option("--silent-penetration-d", sopt.silent_penetration_d, "hull penetration limit [d]")
+      ->capture_default_str();
+  stability->add_option("--silent-overlap-d", sopt.silent_overlap_d, "sphere overlap limit [d]")
+      ->capture_default_str();
+  stability->add_option("--silent-energy", sopt.silent_energy_excess, "energy excess limit [N 1/2 m U^2]")
+      ->capture_default_str();
+#endif
+
   CLI11_PARSE(app, argc, argv);
   ropt.plots = !no_plots;
   ropt.paraview = !no_paraview;
   try {
     if (fsicr->parsed()) return run_fsicr(p, ice_class);
     if (compare->parsed()) return run_compare(compare_runs, compare_out);
+#ifdef BRASH_POST_HAVE_STABILITY
+    if (stability->parsed()) {
+      if (above_water > 0) sopt.above_water_m = above_water;
+      return run_stability(stability_run, sopt, stability_out);
+    }
+#endif
     if (run_dir.empty()) {
       std::cerr << app.help();
       return 2;

@@ -139,7 +139,8 @@ TEST(CaseLoader, DumpThenLoadGivesTheSameCase) {
     c.ice.seed = 18446744073709551615ull;
     c.fluid.model = brash::FluidModel::Both;
     c.fluid.drag_law = brash::DragLaw::SchillerNaumann;
-    c.fluid.ca_table = brash::CaTable::Text;
+    c.fluid.ca_table =
+        std::string(name) == "jbc_quick" ? brash::CaTableSpec::uniform(1.0 / 3.0) : brash::CaTable::Text;
     c.ship.ice_class = brash::IceClass::IA_super;
     c.ice.packing_mode = brash::PackingMode::StrictTwoLayer;
     c.contact.youngs_modulus_pa = 5e6;
@@ -194,6 +195,25 @@ TEST(CaseLoaderErrors, UnknownEnumValue) {
   expect_error("name: x\nfluid: {treatment: semi}\n", {"fluid.treatment", "semi"});
   expect_error("name: x\nship: {ice_class: II}\n", {"ship.ice_class", "II"});
   expect_error("name: x\nice: {packing_mode: dense}\n", {"ice.packing_mode", "dense"});
+}
+
+TEST(CaseLoader, UniformCaTableReadWrittenAndRoundTrips) {  // stability map: "ca_table: uniform <Ca>"
+  const fs::path dir = temp_dir("ca_uniform");
+  const Case c = brash::load_case(write_case(dir, "name: u\nfluid:\n  ca_table: uniform 0.5\n"));
+  EXPECT_EQ(c.fluid.ca_table, brash::CaTableSpec::uniform(0.5));
+  EXPECT_EQ(brash::to_string(c.fluid.ca_table), "uniform 0.5");
+  EXPECT_EQ(brash::to_string(brash::CaTableSpec(brash::CaTable::Zero)), "zero");
+  EXPECT_NE(brash::dump_case_yaml(c).find("  ca_table: uniform 0.5\n"), std::string::npos);
+  EXPECT_EQ(brash::load_case(write_case(dir, brash::dump_case_yaml(c), "back.yaml")), c);
+  EXPECT_EQ(brash::load_case(write_case(dir, "name: u\nfluid: {ca_table: uniform 10}\n", "ten.yaml"))
+                .fluid.ca_table.uniform_ca,
+            10.0);
+}
+
+TEST(CaseLoaderErrors, UniformCaTableNeedsAFiniteNonNegativeValue) {
+  for (const char* bad : {"uniform", "uniform -1", "uniform abc", "uniform 1 2", "uniform .nan", "uniform2"})
+    expect_error(std::string("name: x\nfluid:\n  ca_table: ") + bad + "\n", {"fluid.ca_table", ":3:"});
+  expect_error("name: x\nfluid: {ca_table: table2}\n", {"fluid.ca_table", "table2", "uniform 2"});
 }
 
 TEST(CaseLoaderErrors, NaNAndInfinity) {

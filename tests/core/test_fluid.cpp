@@ -145,6 +145,18 @@ TEST(Params, ParseEnumsAndRejectUnknown) {
   EXPECT_EQ(to_string(parse_fluid_model("added_mass")), "added_mass");
 }
 
+TEST(Params, UniformCaTableFromText) {  // the case file's "ca_table: uniform <Ca>" (stability map)
+  const CaTable t = parse_ca_table("uniform 2");
+  for (const Vec3& v : {t.submerged, t.submerged_reversed, t.partial, t.partial_reversed})
+    EXPECT_EQ(v, Vec3(2, 2, 2));
+  EXPECT_EQ(t.above, Vec3::Zero());
+  EXPECT_EQ(parse_ca_table("uniform 0.5").partial_reversed.z(), 0.5);
+  EXPECT_EQ(parse_ca_table("uniform  1e1 ").submerged.x(), 10.0);
+  for (const char* bad :
+       {"uniform", "uniform2", "uniform -1", "uniform x", "uniform 2 3", "uniform nan", "uniform inf"})
+    EXPECT_THROW(parse_ca_table(bad), brash::InputError) << bad;
+}
+
 TEST(Arrays, MatchesPerSphereEvaluation) {
   FluidParams p;
   p.model = FluidModel::Both;

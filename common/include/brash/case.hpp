@@ -19,7 +19,22 @@ enum class PackingMode { Volume, StrictTwoLayer };    // YAML: volume | strict_t
 enum class FluidModel { Drag, AddedMass, Both };      // YAML: drag | added_mass | both
 enum class Treatment { Implicit, Explicit };          // YAML: implicit | explicit
 enum class DragLaw { Constant, SchillerNaumann };     // YAML: constant | schiller_naumann
-enum class CaTable { Table1, Text, Zero };            // YAML: table1 | text | zero (Ca = 0 everywhere)
+enum class CaTable { Table1, Text, Zero, Uniform };   // YAML: table1 | text | zero (Ca = 0) | uniform <Ca>
+
+// fluid.ca_table: a named added-mass table, or "uniform <Ca>" (the same Ca >= 0 on every axis in every
+// immersed state, for stability studies). Converts from the enum, so `spec = CaTable::Text` works.
+struct CaTableSpec {
+  CaTable table = CaTable::Table1;
+  double uniform_ca = 0;  // used when table == Uniform
+  CaTableSpec() = default;
+  CaTableSpec(CaTable t) : table(t) {}  // NOLINT(google-explicit-constructor): a plain table is a spec
+  static CaTableSpec uniform(double ca) {
+    CaTableSpec s(CaTable::Uniform);
+    s.uniform_ca = ca;
+    return s;
+  }
+  bool operator==(const CaTableSpec&) const = default;
+};
 
 // YAML spelling of each enum value (the inverse is done by the loader, with an error on unknown text).
 std::string_view to_string(IceClass v);
@@ -28,6 +43,9 @@ std::string_view to_string(FluidModel v);
 std::string_view to_string(Treatment v);
 std::string_view to_string(DragLaw v);
 std::string_view to_string(CaTable v);
+// YAML spelling of an added-mass table: "table1" | "text" | "zero" | "uniform <Ca>" (shortest exact number);
+// brash::core::parse_ca_table() and fix icefluid's `ca` keyword read the same text.
+std::string to_string(const CaTableSpec& v);
 
 // FSICR design ice thickness H_M of a Finnish-Swedish ice class: IA_super/IA 1.0, IB 0.8, IC 0.6 m.
 double h_m_for_ice_class(IceClass c);
@@ -95,7 +113,7 @@ struct FluidSpec {
   Treatment treatment = Treatment::Implicit;
   double drag_coefficient = 0.44;
   DragLaw drag_law = DragLaw::Constant;
-  CaTable ca_table = CaTable::Table1;
+  CaTableSpec ca_table;
   bool operator==(const FluidSpec&) const = default;
 };
 

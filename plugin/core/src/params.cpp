@@ -1,8 +1,11 @@
 // Validation and string conversion of FluidParams.
 #include "brash/core/params.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
 
 #include "brash/error.hpp"
 
@@ -70,7 +73,16 @@ CaTable parse_ca_table(std::string_view s) {
   if (s == "table1") return CaTable::table1();
   if (s == "text") return CaTable::text_variant();
   if (s == "zero") return CaTable::uniform(0.0);  // the paper's "Ca = 0" comparison
-  throw InputError(fmt::format("unknown added-mass table '{}' (expected table1 | text | zero)", s));
+  if (s.starts_with("uniform") && s.size() > 7 && std::isspace(static_cast<unsigned char>(s[7]))) {
+    const std::string rest(s.substr(7));  // "uniform <Ca>": the case file's form (stability studies)
+    char* end = nullptr;
+    const double ca = std::strtod(rest.c_str(), &end);
+    const bool number =
+        end != rest.c_str() && std::string_view(end).find_first_not_of(" \t") == std::string_view::npos;
+    if (number && std::isfinite(ca) && ca >= 0) return CaTable::uniform(ca);
+  }
+  throw InputError(
+      fmt::format("unknown added-mass table '{}' (expected table1 | text | zero | uniform <Ca >= 0>)", s));
 }
 
 std::string to_string(FluidModel m) {

@@ -63,7 +63,7 @@ struct FluidParams {
 FluidModel parse_fluid_model(std::string_view s);
 Treatment parse_treatment(std::string_view s);
 DragLaw parse_drag_law(std::string_view s);
-CaTable parse_ca_table(std::string_view s);  // "table1" | "text" | "zero"
+CaTable parse_ca_table(std::string_view s);  // "table1" | "text" | "zero" | "uniform <Ca>" (Ca >= 0)
 std::string to_string(FluidModel m);
 std::string to_string(Treatment t);
 std::string to_string(DragLaw d);
