@@ -6,6 +6,7 @@
 #   paper     Table 1 at the paper's dt (5e-5, 1e-4) for both treatments
 #   one-factor sweeps at the paper's settings (Table 1, dt 1e-4 / ODE 5e-4), both treatments:
 #             speed 0.25 and 4 x 0.482 m/s, ice density 500 and 990 kg/m^3 (ratio 0.5, 0.99), E 1.25 and 20 MPa
+#   boundary  explicit, uniform Ca 0.7 ... 1.5 at the paper's dt: the explicit boundary against m_a/m = 1
 # Every run is judged by `brash-post stability` (verdict stable / guard <which> / crashed / silent); a silent
 # failure (complete, but hull penetration > 0.5 d, overlap > 0.5 d, pieces beyond the walls or > 2 ice
 # thicknesses above the water, NaN, or energy the hull did not supply) is a bug: the script exits 1 if it finds one.
@@ -51,6 +52,8 @@ for eng in $engines; do
     for r in 500 990; do add "$eng density $dt0 table1 $tr 1 $r 5e6"; done
     for e in 1.25e6 2e7; do add "$eng stiffness $dt0 table1 $tr 1 900 $e"; done
   done
+  # the explicit boundary: theory m_a/m = Ca rho_w s / rho_i = 1, i.e. Ca 0.9 for a piece pushed under, 1 afloat
+  for ca in 0.7 0.8 0.9 1 1.1 1.25 1.5; do add "$eng boundary $dt0 $ca explicit 1 900 5e6"; done
 done
 
 cell_id() { echo "$1-$2-dt$3-ca$4-$5-u$6-rho$7-E$8"; }
@@ -139,7 +142,14 @@ for eng in sorted(set(r['eng'] for r in rows)):
             cg = [r for r in g if r['ca'] == ca]
             md.append('  - %s Ca %s (m_a/m %.2f submerged): %s' % (tr, ca, cg[0]['mam'] if cg else 0,
                       ', '.join('dt %s %s' % (r['dt'], r['v']) for r in cg)))
-    p = [r for r in er if r['sweep'] != 'grid' and r['tr'] == 'implicit']
+    b = sorted((float(r['ca']), r['v']) for r in er if r['sweep'] == 'boundary')
+    if b:
+        ok = [c for c, v in b if v == 'stable']
+        bad = [c for c, v in b if v != 'stable']
+        md.append('  - explicit boundary (uniform Ca at dt %s): largest stable Ca %s, smallest unstable Ca %s; theory '
+                  'Ca rho_w s / rho_i = 1: Ca 0.9 (piece pushed under), 1.0 (floating, s = 0.9)' % (
+                      [r['dt'] for r in er if r['sweep'] == 'boundary'][0], max(ok) if ok else '-', min(bad) if bad else '-'))
+    p = [r for r in er if r['sweep'] not in ('grid', 'boundary') and r['tr'] == 'implicit']
     md.append('  - implicit, Table 1 (paper settings and one-factor sweeps): %d of %d stable' % (
         sum(r['v'] == 'stable' for r in p), len(p)))
 md.append('- silent failures: %d%s' % (len(silent), ''.join('\n  - ' + r['line'] for r in silent)))
