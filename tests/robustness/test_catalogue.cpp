@@ -126,6 +126,12 @@ std::vector<Entry> catalogue() {
                        {"{dir}/case.yaml:2:1", "key 'colour'", "unknown key"}));
   c.push_back(bad_case("case_unknown_section_key", "name: x\nice:\n  porosityy: 0.3\n",
                        {"{dir}/case.yaml:3:3", "key 'ice.porosityy'", "unknown key"}));
+  c.push_back(bad_case("case_unknown_guards_key", "name: x\nguards:\n  max_penetration: 0.3\n",
+                       {"{dir}/case.yaml:3:3", "key 'guards.max_penetration'", "unknown key"}));
+  c.push_back(bad_case("case_guards_negative_penetration", "name: x\nguards: {max_hull_penetration_d: -1}\n",
+                       {"{dir}/case.yaml:2", "key 'guards.max_hull_penetration_d'", "[0, 10]"}));
+  c.push_back(bad_case("case_guards_every_zero", "name: x\nguards: {every_steps: 0}\n",
+                       {"{dir}/case.yaml:2", "key 'guards.every_steps'", "integer"}));
   c.push_back(bad_case("case_wrong_type_text_for_number", "name: x\nship: {speed_m_s: fast}\n",
                        {"{dir}/case.yaml:2", "key 'ship.speed_m_s'", "expected a number, got 'fast'"}));
   c.push_back(bad_case("case_wrong_type_section_is_number", "name: x\nice: 5\n",
