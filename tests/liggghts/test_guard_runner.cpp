@@ -83,3 +83,17 @@ TEST(LiggghtsGuardRunner, HullPenetrationStopsTheRunWithAClearMessage) {
   EXPECT_NE(brash::test::read_text(dir / "run.log").find("hull penetration"), std::string::npos);
   fs::remove_all(dir);
 }
+
+// LIGGGHTS refuses E < 5 MPa in SI units unless the script says `soft_particles yes`: the runner writes it for
+// soft cases, so a case the loader accepts also runs (found by bench/stability_engines.sh: E 1.25 MPa crashed).
+TEST(LiggghtsGuardRunner, SoftIceBelowFiveMegapascalRuns) {
+  const fs::path dir = brash::test::fresh_dir("soft_ice");
+  write_small_case(dir / "case", "0.02", "");
+  std::string yaml = brash::test::read_text(dir / "case/case.yaml");
+  yaml = std::regex_replace(yaml, std::regex("\n  youngs_modulus_pa:[^\n]*"), "\n  youngs_modulus_pa: 1.25e6");
+  std::ofstream(dir / "case/case.yaml") << yaml;
+  EXPECT_EQ(run_case(dir), 0) << brash::test::read_text(dir / "run.log");
+  EXPECT_NE(brash::test::read_text(dir / "run/in.lmp").find("\nsoft_particles yes\n"), std::string::npos);
+  EXPECT_NE(brash::test::read_text(dir / "run/meta.json").find("\"complete\""), std::string::npos);
+  fs::remove_all(dir);
+}

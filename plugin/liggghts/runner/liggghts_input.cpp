@@ -79,6 +79,9 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
   s += "# brash: LIGGGHTS scene written by brash-liggghts-run for case " + c.name + "\n";
   s += "atom_style granular\natom_modify map array sort 0 0.0\nboundary f f f\nnewton off\n";
   s += "communicate single vel yes\nunits si\n";
+  // LIGGGHTS refuses E < 5 MPa in SI units unless told otherwise; softer ice is a legitimate speed knob (the
+  // time-step guard still checks dt against the Rayleigh time of the softer contact).
+  if (c.contact.youngs_modulus_pa < 5.0e6) s += "soft_particles yes\n";
   s += opt.ranks > 1 ? "processors 1 * 1\n" : "";
   s += opt.restart_file.empty() ? std::string("read_data packing.data\n") : "read_restart " + opt.restart_file + "\n";
   // speedups (docs/performance.md): idle far-field ice lives in group `idle`, the rest in `active`
