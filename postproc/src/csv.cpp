@@ -36,7 +36,10 @@ void split_fields(std::string_view line, std::vector<std::string_view>& out) {
 
 std::string join(std::span<const std::string_view> cols) {
   std::string s;
-  for (const auto c : cols) s += (s.empty() ? "" : ",") + std::string(c);
+  for (std::size_t i = 0; i < cols.size(); ++i) {  // piecewise: GCC 12 -O3 warns (falsely) on "," + std::string
+    if (i > 0) s += ',';
+    s.append(cols[i]);
+  }
   return s;
 }
 
