@@ -21,19 +21,12 @@ namespace fs = std::filesystem;
 namespace {
 
 void write_small_case(const fs::path& case_dir, const std::string& duration, const std::string& extra) {
-  std::string yaml = brash::test::read_text(fs::path(BRASH_SOURCE_DIR) / "cases/jbc_quick/case.yaml");
-  auto set = [&](const std::string& key, const std::string& value) {
-    yaml = std::regex_replace(yaml, std::regex("\n  " + key + ":[^\n]*"), "\n  " + key + ": " + value);
-  };
-  set("length_m", "0.8");
-  set("width_m", "1.3");
-  set("start_x_m", "-7.05");
-  set("duration_s", duration);
-  set("window_s", "[0.0, " + duration + "]");
-  set("output_interval_s", "0.01");
-  set("dump_interval_s", "0.05");
-  fs::create_directories(case_dir);
-  std::ofstream(case_dir / "case.yaml") << yaml << extra;
+  brash::test::write_small_quick_case(fs::path(BRASH_SOURCE_DIR) / "cases/jbc_quick/case.yaml", case_dir,
+                                      {.duration_s = duration,
+                                       .window_s = "[0.0, " + duration + "]",
+                                       .output_interval_s = "0.01",
+                                       .dump_interval_s = "0.05",
+                                       .extra = extra});
 }
 
 int run_case(const fs::path& dir) {
@@ -84,13 +77,15 @@ TEST(LiggghtsGuardRunner, HullPenetrationStopsTheRunWithAClearMessage) {
   fs::remove_all(dir);
 }
 
-// LIGGGHTS refuses E < 5 MPa in SI units unless the script says `soft_particles yes`: the runner writes it for
-// soft cases, so a case the loader accepts also runs (found by bench/stability_engines.sh: E 1.25 MPa crashed).
+// LIGGGHTS refuses E < 5 MPa in SI units unless the script says `soft_particles yes`: the runner writes it
+// for soft cases, so a case the loader accepts also runs (found by bench/stability_engines.sh: E 1.25 MPa
+// crashed).
 TEST(LiggghtsGuardRunner, SoftIceBelowFiveMegapascalRuns) {
   const fs::path dir = brash::test::fresh_dir("soft_ice");
   write_small_case(dir / "case", "0.02", "");
   std::string yaml = brash::test::read_text(dir / "case/case.yaml");
-  yaml = std::regex_replace(yaml, std::regex("\n  youngs_modulus_pa:[^\n]*"), "\n  youngs_modulus_pa: 1.25e6");
+  yaml =
+      std::regex_replace(yaml, std::regex("\n  youngs_modulus_pa:[^\n]*"), "\n  youngs_modulus_pa: 1.25e6");
   std::ofstream(dir / "case/case.yaml") << yaml;
   EXPECT_EQ(run_case(dir), 0) << brash::test::read_text(dir / "run.log");
   EXPECT_NE(brash::test::read_text(dir / "run/in.lmp").find("\nsoft_particles yes\n"), std::string::npos);

@@ -46,28 +46,21 @@ double mean_resistance(const std::vector<Row>& rows, double t0) {
   return n ? s / n : 0;
 }
 std::string run_cmd(const fs::path& case_dir, const fs::path& out) {
-  return std::string("env BRASH_HULL_DIR='") + BRASH_HULL_DIR + "' '" + BRASH_BIN_DIR + "/brash-liggghts-run' '" +
-         case_dir.string() + "' --no-post --out '" + out.string() + "'";
+  return std::string("env BRASH_HULL_DIR='") + BRASH_HULL_DIR + "' '" + BRASH_BIN_DIR +
+         "/brash-liggghts-run' '" + case_dir.string() + "' --no-post --out '" + out.string() + "'";
 }
 }  // namespace
 
 namespace {
-// The quick case, narrowed and shortened: the stem starts 5 cm before the ice, 0.6 s.
+// The quick case, narrowed and shortened (liggghts_runner.h): 0.6 s.
 void write_small_case(const fs::path& case_dir, const std::string& window, const std::string& output_interval,
                       const std::string& extra) {
-  std::string yaml = brash::test::read_text(fs::path(BRASH_SOURCE_DIR) / "cases/jbc_quick/case.yaml");
-  auto set = [&](const std::string& key, const std::string& value) {
-    yaml = std::regex_replace(yaml, std::regex("\n  " + key + ":[^\n]*"), "\n  " + key + ": " + value);
-  };
-  set("length_m", "0.8");
-  set("width_m", "1.3");
-  set("start_x_m", "-7.05");
-  set("duration_s", "0.6");
-  set("window_s", window);
-  set("output_interval_s", output_interval);
-  set("dump_interval_s", "0.1");
-  fs::create_directories(case_dir);
-  std::ofstream(case_dir / "case.yaml") << yaml << extra;
+  brash::test::write_small_quick_case(fs::path(BRASH_SOURCE_DIR) / "cases/jbc_quick/case.yaml", case_dir,
+                                      {.duration_s = "0.6",
+                                       .window_s = window,
+                                       .output_interval_s = output_interval,
+                                       .dump_interval_s = "0.1",
+                                       .extra = extra});
 }
 }  // namespace
 
@@ -75,14 +68,17 @@ TEST(LiggghtsRunner, EarlyStopWhenTheConfidenceIntervalIsSmallEnough) {
   const fs::path dir = brash::test::fresh_dir("earlystop");
   // A loose threshold (50 % of the mean) so that the short run meets it: checked from 0.1 + 0.4 * 0.5 s on.
   write_small_case(dir / "case", "[0.1, 0.6]", "0.002", "speedups:\n  early_stop_rel_ci: 0.5\n");
-  ASSERT_EQ(std::system((run_cmd(dir / "case", dir / "run") + " > '" + (dir / "run.log").string() + "' 2>&1").c_str()), 0);
+  ASSERT_EQ(
+      std::system(
+          (run_cmd(dir / "case", dir / "run") + " > '" + (dir / "run.log").string() + "' 2>&1").c_str()),
+      0);
   const std::string meta = brash::test::read_text(dir / "run/meta.json");
   EXPECT_NE(meta.find("\"complete\""), std::string::npos);
   ASSERT_NE(meta.find("\"early_stop\""), std::string::npos) << meta;
   const auto rows = read_force(dir / "run/hull_force.csv");
   ASSERT_FALSE(rows.empty());
   EXPECT_GE(rows.back().t, 0.3 - 1e-9);  // not before the check starts
-  EXPECT_LT(rows.back().t, 0.55);         // well before the requested end
+  EXPECT_LT(rows.back().t, 0.55);        // well before the requested end
   // the run's resolved case ends at the stop, so the report's window does too
   const std::string yaml = brash::test::read_text(dir / "run/case.yaml");
   EXPECT_EQ(yaml.find("duration_s: 0.6\n"), std::string::npos) << yaml;
@@ -93,12 +89,16 @@ TEST(LiggghtsResume, KilledRunResumesToTheSameResult) {
   const fs::path dir = brash::test::fresh_dir("resume");
   write_small_case(dir / "case", "[0.2, 0.6]", "0.01", "");
 
-  ASSERT_EQ(std::system((run_cmd(dir / "case", dir / "full") + " > '" + (dir / "full.log").string() + "' 2>&1").c_str()), 0);
+  ASSERT_EQ(
+      std::system(
+          (run_cmd(dir / "case", dir / "full") + " > '" + (dir / "full.log").string() + "' 2>&1").c_str()),
+      0);
 
   // Start in a new session (process group = its pid), kill -9 the whole group after the 2nd restart file.
   const fs::path killed = dir / "killed";
-  const std::string start = "setsid bash -c 'echo $$ > \"" + (dir / "pid").string() + "\"; exec " + run_cmd(dir / "case", killed) +
-                            "' > '" + (dir / "killed.log").string() + "' 2>&1 &";
+  const std::string start = "setsid bash -c 'echo $$ > \"" + (dir / "pid").string() + "\"; exec " +
+                            run_cmd(dir / "case", killed) + "' > '" + (dir / "killed.log").string() +
+                            "' 2>&1 &";
   ASSERT_EQ(std::system(start.c_str()), 0);
   bool both = false;
   for (int i = 0; i < 600 && !both; ++i) {
@@ -108,12 +108,14 @@ TEST(LiggghtsResume, KilledRunResumesToTheSameResult) {
   ASSERT_TRUE(both) << "no second restart file";
   std::this_thread::sleep_for(std::chrono::milliseconds(500));
   const std::string pid = brash::test::read_text(dir / "pid");
-  ASSERT_EQ(std::system(("kill -9 -" + pid.substr(0, pid.find('\n')) + " 2>/dev/null; sleep 0.5").c_str()), 0);
+  ASSERT_EQ(std::system(("kill -9 -" + pid.substr(0, pid.find('\n')) + " 2>/dev/null; sleep 0.5").c_str()),
+            0);
   EXPECT_FALSE(fs::exists(killed / "restart/final.restart")) << "killed too late: the run had finished";
   EXPECT_NE(brash::test::read_text(killed / "meta.json").find("\"running\""), std::string::npos);
 
-  ASSERT_EQ(std::system((std::string("'") + BRASH_BIN_DIR + "/brash-liggghts-run' --resume '" + killed.string() +
-                         "' --no-post > '" + (dir / "resume.log").string() + "' 2>&1").c_str()),
+  ASSERT_EQ(std::system((std::string("'") + BRASH_BIN_DIR + "/brash-liggghts-run' --resume '" +
+                         killed.string() + "' --no-post > '" + (dir / "resume.log").string() + "' 2>&1")
+                            .c_str()),
             0);
   EXPECT_NE(brash::test::read_text(killed / "meta.json").find("\"complete\""), std::string::npos);
 
