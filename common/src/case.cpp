@@ -453,9 +453,7 @@ double min_radius_m(const Case& c) {
 }
 
 double rayleigh_time_s(const Case& c) {
-  const double nu = c.contact.poisson_ratio;
-  const double g = c.contact.youngs_modulus_pa / (2 * (1 + nu));
-  return std::numbers::pi * min_radius_m(c) * std::sqrt(c.ice.density_kg_m3 / g) / (0.1631 * nu + 0.8766);
+  return rayleigh_time_s(min_radius_m(c), c.ice.density_kg_m3, c.contact.youngs_modulus_pa, c.contact.poisson_ratio);
 }
 
 Case load_case(const fs::path& case_yaml) {

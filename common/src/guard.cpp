@@ -87,12 +87,6 @@ std::optional<std::string> check_piece(const Piece& p, const Limits& limits, con
   return std::nullopt;
 }
 
-double rayleigh_time_s(double radius_m, double density_kg_m3, double youngs_modulus_pa,
-                       double poisson_ratio) {
-  const double g = youngs_modulus_pa / (2.0 * (1.0 + poisson_ratio));
-  return std::numbers::pi * radius_m * std::sqrt(density_kg_m3 / g) / (0.1631 * poisson_ratio + 0.8766);
-}
-
 std::optional<std::string> check_timestep(double dt_s, double radius_m, double density_kg_m3,
                                           double youngs_modulus_pa, double poisson_ratio,
                                           double max_fraction) {

@@ -68,39 +68,29 @@ void FixBrashGuard::end_of_step() { check_atoms(); }
 void FixBrashGuard::check_timestep() {
   if (!cfg_.youngs_modulus_pa) return;
   const double e = *cfg_.youngs_modulus_pa, nu = cfg_.poisson_ratio;
-  // Smallest Rayleigh time over the group (per atom r and rho unless overridden).
-  double local[2] = {std::numeric_limits<double>::infinity(), 0.0};  // T_R, atom id
-  double rr = 0, rho = 0;
+  // Smallest Rayleigh time over the group (per atom r and rho unless overridden), with the atom id, r and rho
+  // that set it (info: id, r, rho; id 0 when rmin and density are both given).
+  double t_min = std::numeric_limits<double>::infinity();
+  double info[3] = {0, 0, 0};
   if (cfg_.r_min_m && cfg_.density_kg_m3) {
-    local[0] = rayleigh_time_s(*cfg_.r_min_m, *cfg_.density_kg_m3, e, nu);
+    t_min = guard::rayleigh_time_s(*cfg_.r_min_m, *cfg_.density_kg_m3, e, nu);
+    info[1] = *cfg_.r_min_m, info[2] = *cfg_.density_kg_m3;
   } else {
     for (int i = 0; i < atom->nlocal; ++i) {
       if (!(atom->mask[i] & groupbit)) continue;
       const double r = cfg_.r_min_m ? *cfg_.r_min_m : atom->radius[i];
-      const double d = cfg_.density_kg_m3 ? *cfg_.density_kg_m3
-                                          : atom->rmass[i] / (4.0 / 3.0 * kPi * std::pow(atom->radius[i], 3));
-      const double t = rayleigh_time_s(r, d, e, nu);
-      if (t < local[0]) local[0] = t, local[1] = static_cast<double>(atom->tag[i]);
+      const double rho = cfg_.density_kg_m3 ? *cfg_.density_kg_m3
+                                            : atom->rmass[i] / (4.0 / 3.0 * kPi * std::pow(atom->radius[i], 3));
+      const double t = guard::rayleigh_time_s(r, rho, e, nu);
+      if (t < t_min) t_min = t, info[0] = static_cast<double>(atom->tag[i]), info[1] = r, info[2] = rho;
     }
   }
   struct {
     double t;
     int rank;
-  } in{local[0], comm->me}, out{};
+  } in{t_min, comm->me}, out{};
   MPI_Allreduce(&in, &out, 1, MPI_DOUBLE_INT, MPI_MINLOC, world);
   if (!std::isfinite(out.t)) return;  // no atoms yet
-  double info[3] = {local[1], 0, 0};
-  if (comm->me == out.rank && !(cfg_.r_min_m && cfg_.density_kg_m3)) {
-    // describe the atom that set the limit
-    for (int i = 0; i < atom->nlocal; ++i)
-      if (static_cast<double>(atom->tag[i]) == local[1]) {
-        rr = cfg_.r_min_m ? *cfg_.r_min_m : atom->radius[i];
-        rho = cfg_.density_kg_m3 ? *cfg_.density_kg_m3 : atom->rmass[i] / (4.0 / 3.0 * kPi * std::pow(atom->radius[i], 3));
-        info[1] = rr, info[2] = rho;
-      }
-  } else if (cfg_.r_min_m && cfg_.density_kg_m3) {
-    info[1] = *cfg_.r_min_m, info[2] = *cfg_.density_kg_m3;
-  }
   MPI_Bcast(info, 3, MPI_DOUBLE, out.rank, world);
   if (const auto cause = guard::check_timestep(update->dt, info[1], info[2], e, nu, cfg_.max_dt_fraction)) {
     const std::string who = (cfg_.r_min_m && cfg_.density_kg_m3) ? std::string("rmin/density")

@@ -5,7 +5,6 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,12 +31,6 @@ struct GuardConfig {
   std::array<double, 3> hull_velocity_m_s{};
   std::optional<double> max_penetration;         // default 0.5 (centre on the surface) when hull is given
 };
-
-// Rayleigh time of a Hertz contact: T_R = pi r sqrt(rho / G) / (0.1631 nu + 0.8766), G = E / (2 (1 + nu)).
-inline double rayleigh_time_s(double radius_m, double density_kg_m3, double youngs_modulus_pa, double poisson_ratio) {
-  const double g = youngs_modulus_pa / (2.0 * (1.0 + poisson_ratio));
-  return std::numbers::pi * radius_m * std::sqrt(density_kg_m3 / g) / (0.1631 * poisson_ratio + 0.8766);
-}
 
 namespace guard_detail {
 

@@ -4,7 +4,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -60,31 +59,6 @@ inline std::string ice_contact_model(const std::string& friction) {
 inline std::string read_text(const std::filesystem::path& file) {
   std::ifstream in(file);
   return {std::istreambuf_iterator<char>(in), {}};
-}
-
-// The quick case narrowed and shortened for runner tests: the JBC stem starts 5 cm before a 0.8 m channel of
-// ice, 1.3 m wide. Reads quick_yaml (cases/jbc_quick/case.yaml), writes case_dir/case.yaml; `extra` is
-// appended (e.g. a guards: section).
-struct SmallCase {
-  std::string duration_s = "0.6", window_s = "[0.0, 0.6]", output_interval_s = "0.01",
-              dump_interval_s = "0.1";
-  std::string extra;
-};
-inline void write_small_quick_case(const std::filesystem::path& quick_yaml,
-                                   const std::filesystem::path& case_dir, const SmallCase& k) {
-  std::string yaml = read_text(quick_yaml);
-  auto set = [&](const std::string& key, const std::string& value) {
-    yaml = std::regex_replace(yaml, std::regex("\n  " + key + ":[^\n]*"), "\n  " + key + ": " + value);
-  };
-  set("length_m", "0.8");
-  set("width_m", "1.3");
-  set("start_x_m", "-7.05");
-  set("duration_s", k.duration_s);
-  set("window_s", k.window_s);
-  set("output_interval_s", k.output_interval_s);
-  set("dump_interval_s", k.dump_interval_s);
-  std::filesystem::create_directories(case_dir);
-  std::ofstream(case_dir / "case.yaml") << yaml << k.extra;
 }
 
 }  // namespace brash::test

@@ -14,26 +14,22 @@
 #include <regex>
 #include <string>
 
-#include "liggghts_runner.h"
+#include "runner_case.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
 void write_small_case(const fs::path& case_dir, const std::string& duration, const std::string& extra) {
-  brash::test::write_small_quick_case(fs::path(BRASH_SOURCE_DIR) / "cases/jbc_quick/case.yaml", case_dir,
-                                      {.duration_s = duration,
-                                       .window_s = "[0.0, " + duration + "]",
-                                       .output_interval_s = "0.01",
-                                       .dump_interval_s = "0.05",
-                                       .extra = extra});
+  brash::test::write_small_quick_case(case_dir, {.duration_s = duration,
+                                                 .window_s = "[0.0, " + duration + "]",
+                                                 .output_interval_s = "0.01",
+                                                 .dump_interval_s = "0.05",
+                                                 .extra = extra});
 }
 
 int run_case(const fs::path& dir) {
-  const std::string cmd = std::string("env BRASH_HULL_DIR='") + BRASH_HULL_DIR + "' '" + BRASH_BIN_DIR +
-                          "/brash-liggghts-run' '" + (dir / "case").string() + "' --no-post --out '" +
-                          (dir / "run").string() + "' > '" + (dir / "run.log").string() + "' 2>&1";
-  return std::system(cmd.c_str());
+  return brash::test::run_runner(dir / "case", dir / "run", dir / "run.log");
 }
 
 }  // namespace

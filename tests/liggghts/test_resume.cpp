@@ -16,7 +16,7 @@
 #include <thread>
 #include <vector>
 
-#include "liggghts_runner.h"
+#include "runner_case.h"
 
 namespace fs = std::filesystem;
 
@@ -45,22 +45,17 @@ double mean_resistance(const std::vector<Row>& rows, double t0) {
     if (r.t >= t0) s -= r.fx, ++n;
   return n ? s / n : 0;
 }
-std::string run_cmd(const fs::path& case_dir, const fs::path& out) {
-  return std::string("env BRASH_HULL_DIR='") + BRASH_HULL_DIR + "' '" + BRASH_BIN_DIR +
-         "/brash-liggghts-run' '" + case_dir.string() + "' --no-post --out '" + out.string() + "'";
-}
 }  // namespace
 
 namespace {
 // The quick case, narrowed and shortened (liggghts_runner.h): 0.6 s.
 void write_small_case(const fs::path& case_dir, const std::string& window, const std::string& output_interval,
                       const std::string& extra) {
-  brash::test::write_small_quick_case(fs::path(BRASH_SOURCE_DIR) / "cases/jbc_quick/case.yaml", case_dir,
-                                      {.duration_s = "0.6",
-                                       .window_s = window,
-                                       .output_interval_s = output_interval,
-                                       .dump_interval_s = "0.1",
-                                       .extra = extra});
+  brash::test::write_small_quick_case(case_dir, {.duration_s = "0.6",
+                                                 .window_s = window,
+                                                 .output_interval_s = output_interval,
+                                                 .dump_interval_s = "0.1",
+                                                 .extra = extra});
 }
 }  // namespace
 
@@ -68,10 +63,7 @@ TEST(LiggghtsRunner, EarlyStopWhenTheConfidenceIntervalIsSmallEnough) {
   const fs::path dir = brash::test::fresh_dir("earlystop");
   // A loose threshold (50 % of the mean) so that the short run meets it: checked from 0.1 + 0.4 * 0.5 s on.
   write_small_case(dir / "case", "[0.1, 0.6]", "0.002", "speedups:\n  early_stop_rel_ci: 0.5\n");
-  ASSERT_EQ(
-      std::system(
-          (run_cmd(dir / "case", dir / "run") + " > '" + (dir / "run.log").string() + "' 2>&1").c_str()),
-      0);
+  ASSERT_EQ(brash::test::run_runner(dir / "case", dir / "run", dir / "run.log"), 0);
   const std::string meta = brash::test::read_text(dir / "run/meta.json");
   EXPECT_NE(meta.find("\"complete\""), std::string::npos);
   ASSERT_NE(meta.find("\"early_stop\""), std::string::npos) << meta;
@@ -89,16 +81,13 @@ TEST(LiggghtsResume, KilledRunResumesToTheSameResult) {
   const fs::path dir = brash::test::fresh_dir("resume");
   write_small_case(dir / "case", "[0.2, 0.6]", "0.01", "");
 
-  ASSERT_EQ(
-      std::system(
-          (run_cmd(dir / "case", dir / "full") + " > '" + (dir / "full.log").string() + "' 2>&1").c_str()),
-      0);
+  ASSERT_EQ(brash::test::run_runner(dir / "case", dir / "full", dir / "full.log"), 0);
 
   // Start in a new session (process group = its pid), kill -9 the whole group after the 2nd restart file.
   const fs::path killed = dir / "killed";
   const std::string start = "setsid bash -c 'echo $$ > \"" + (dir / "pid").string() + "\"; exec " +
-                            run_cmd(dir / "case", killed) + "' > '" + (dir / "killed.log").string() +
-                            "' 2>&1 &";
+                            brash::test::runner_command(dir / "case", killed) + "' > '" +
+                            (dir / "killed.log").string() + "' 2>&1 &";
   ASSERT_EQ(std::system(start.c_str()), 0);
   bool both = false;
   for (int i = 0; i < 600 && !both; ++i) {

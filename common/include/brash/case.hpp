@@ -5,8 +5,10 @@
 // All quantities are SI; the unit is in each field's name.
 #pragma once
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -179,6 +181,12 @@ struct Case {
 // run.timestep_s / T_R (the loader rejects larger steps; docs/stability.md).
 inline constexpr double kMaxTimestepOverRayleigh = 0.3;
 double min_radius_m(const Case& c);
+// Rayleigh time of a Hertz contact: T_R = pi r sqrt(rho / G) / (0.1631 nu + 0.8766), G = E / (2 (1 + nu)).
+// Inline: the guards (brash_guard) use it without linking the case loader.
+inline double rayleigh_time_s(double radius_m, double density_kg_m3, double youngs_modulus_pa, double poisson_ratio) {
+  const double shear_modulus_pa = youngs_modulus_pa / (2.0 * (1.0 + poisson_ratio));
+  return std::numbers::pi * radius_m * std::sqrt(density_kg_m3 / shear_modulus_pa) / (0.1631 * poisson_ratio + 0.8766);
+}
 double rayleigh_time_s(const Case& c);
 
 // Reads, validates and resolves a case file. Throws brash::InputError naming the file, the key

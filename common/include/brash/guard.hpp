@@ -61,8 +61,8 @@ struct Piece {
 // "left the box: x = 2.31 > xhi = 2.2 (m)", or nullopt. `hull` may be null (no hull guard).
 std::optional<std::string> check_piece(const Piece& p, const Limits& limits, const HullNow* hull = nullptr);
 
-// Rayleigh time of a Hertz contact: T_R = pi r sqrt(rho / G) / (0.1631 nu + 0.8766), G = E / (2 (1 + nu)).
-double rayleigh_time_s(double radius_m, double density_kg_m3, double youngs_modulus_pa, double poisson_ratio);
+// Rayleigh time of a Hertz contact (case.hpp).
+using brash::rayleigh_time_s;
 
 // The contact time-step check for the smallest piece: cause text when dt > max_fraction T_R, else nullopt.
 std::optional<std::string> check_timestep(double dt_s, double radius_m, double density_kg_m3,

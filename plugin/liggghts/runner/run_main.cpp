@@ -53,12 +53,6 @@ std::size_t convert_hull_force(const std::vector<fs::path>& raws, const fs::path
   return rows.size();
 }
 
-std::pair<double, double> bbox_y(const brash::hull::Mesh& mesh) {
-  double lo = 1e300, hi = -1e300;
-  for (const auto& v : mesh.vertices) lo = std::min(lo, v.y()), hi = std::max(hi, v.y());
-  return {lo, hi};
-}
-
 // Raw hull-force files of earlier (killed) attempts, oldest first, then the current one.
 std::vector<fs::path> hull_force_raws(const fs::path& run_dir) {
   std::vector<fs::path> parts;
@@ -270,19 +264,16 @@ int main(int argc, char** argv) {
     if (c.speedups.symmetry_y) spheres = brash::liggghts::half_channel_spheres(spheres);
     auto mesh = brash::hull::read_mesh(c.hull.file);
     brash::hull::require_plausible_units(mesh, c.hull.file, c.hull.draft_m, c.hull.lpp_m);
-    double xmin = 1e300, xmax = -1e300, zmin = 1e300, zmax = -1e300;
-    for (const auto& v : mesh.vertices) {
-      xmin = std::min(xmin, v.x()), xmax = std::max(xmax, v.x());
-      zmin = std::min(zmin, v.z()), zmax = std::max(zmax, v.z());
-    }
-    const double hull_half_beam = std::max(std::abs(bbox_y(mesh).first), std::abs(bbox_y(mesh).second));
+    // Extents and closedness of the full hull (the guard's hull; the contact mesh may be a band or a half).
+    const brash::hull::MeshCheck full = brash::hull::check_mesh(mesh);
+    const double xmin = full.min_m.x(), xmax = full.max_m.x(), zmin = full.min_m.z(), zmax = full.max_m.z();
+    const double hull_half_beam = std::max(std::abs(full.min_m.y()), std::abs(full.max_m.y()));
     if (2 * hull_half_beam >= c.channel.width_m)
       throw InputError(fmt::format("{}: channel.width_m = {} m is not wider than the hull ({} m across in {}): the "
                                    "channel walls would cut the hull",
                                    case_file.string(), c.channel.width_m, 2 * hull_half_beam, c.hull.file.string()));
-    // The hull guard needs the full closed hull; the contact mesh may be a band or a half of it.
     const brash::hull::Mesh full_mesh = mesh;
-    const bool full_closed = brash::hull::check_mesh(full_mesh).closed;
+    const bool full_closed = full.closed;
     if (c.hull.band_m) mesh = brash::hull::clip_band(mesh, c.hull.draft_m - (*c.hull.band_m)[0], c.hull.draft_m + (*c.hull.band_m)[1]);
     if (c.speedups.symmetry_y) mesh = brash::liggghts::half_hull(mesh);
     const bool reduced_mesh = c.hull.band_m || c.speedups.symmetry_y;

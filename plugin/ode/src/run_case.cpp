@@ -240,15 +240,11 @@ RunResult run_case(const RunOptions& cli_options) {
   // Run-time guards (brash::guard, docs/stability.md): the limits of the LIGGGHTS scene box of the same case
   // (from the full hull's extents) and the hull penetration query on the full closed hull, even when the
   // contact mesh is a band (a piece slipping under the band ends up inside the full hull).
-  double fx0 = 1e300, fx1 = -1e300, fz0 = 1e300, fz1 = -1e300;
-  for (const auto& v : mesh.vertices) {
-    fx0 = std::min(fx0, v.x()), fx1 = std::max(fx1, v.x());
-    fz0 = std::min(fz0, v.z()), fz1 = std::max(fz1, v.z());
-  }
-  const guard::Limits limits =
-      guard::limits_for_case(c, guard::domain_box(c, fx0, fx1, fz0, fz1, c.run.duration_s));
+  const hull::MeshCheck full = hull::check_mesh(mesh);  // extents and closedness of the full hull
+  const guard::Limits limits = guard::limits_for_case(
+      c, guard::domain_box(c, full.min_m.x(), full.max_m.x(), full.min_m.z(), full.max_m.z(), c.run.duration_s));
   std::unique_ptr<hull::Proximity> hull_query;
-  const bool hull_closed = hull::check_mesh(mesh).closed;
+  const bool hull_closed = full.closed;
   if (limits.max_hull_penetration_d && hull_closed) hull_query = std::make_unique<hull::Proximity>(mesh);
   if (c.hull.band_m) mesh = hull::clip_band(mesh, c.hull.draft_m - (*c.hull.band_m)[0], c.hull.draft_m + (*c.hull.band_m)[1]);
   std::vector<double> verts;

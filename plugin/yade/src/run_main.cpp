@@ -104,14 +104,11 @@ int main(int argc, char** argv) {
     // the full hull) and the hull penetration check on the full closed hull, also when the contact hull is a
     // band.
     const brash::hull::Mesh full_mesh = mesh;
-    const bool full_closed = brash::hull::check_mesh(full_mesh).closed;
-    double fx0 = 1e300, fx1 = -1e300, fz0 = 1e300, fz1 = -1e300;
-    for (const auto& v : full_mesh.vertices) {
-      fx0 = std::min(fx0, v.x()), fx1 = std::max(fx1, v.x());
-      fz0 = std::min(fz0, v.z()), fz1 = std::max(fz1, v.z());
-    }
-    const auto limits =
-        brash::guard::limits_for_case(c, brash::guard::domain_box(c, fx0, fx1, fz0, fz1, c.run.duration_s));
+    const brash::hull::MeshCheck full = brash::hull::check_mesh(full_mesh);  // extents and closedness
+    const bool full_closed = full.closed;
+    const auto limits = brash::guard::limits_for_case(
+        c, brash::guard::domain_box(c, full.min_m.x(), full.max_m.x(), full.min_m.z(), full.max_m.z(),
+                                    c.run.duration_s));
     if (c.hull.band_m)
       mesh = brash::hull::clip_band(mesh, c.hull.draft_m - (*c.hull.band_m)[0], c.hull.draft_m + (*c.hull.band_m)[1]);
 
