@@ -77,6 +77,23 @@ TEST(LiggghtsRunner, EarlyStopWhenTheConfidenceIntervalIsSmallEnough) {
   fs::remove_all(dir);
 }
 
+TEST(LiggghtsRunner, RestartIntervalDefaultsToATenthOfTheRunAndCanBeSet) {
+  const fs::path dir = brash::test::fresh_dir("restart_every");
+  write_small_case(dir / "case", "[0.0, 0.6]", "0.01", "");
+  const std::string cmd = brash::test::runner_command(dir / "case", dir / "run_default") + " --prepare-only > /dev/null";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  // dt = 1e-4 s: a tenth of 0.6 s is 600 steps
+  EXPECT_NE(brash::test::read_text(dir / "run_default/in.lmp").find("\nrestart 600 "), std::string::npos);
+  const std::string cmd_set = brash::test::runner_command(dir / "case", dir / "run_set") +
+                              " --prepare-only --restart-every 0.02 > /dev/null";
+  ASSERT_EQ(std::system(cmd_set.c_str()), 0);
+  EXPECT_NE(brash::test::read_text(dir / "run_set/in.lmp").find("\nrestart 200 "), std::string::npos);
+  const std::string cmd_bad = brash::test::runner_command(dir / "case", dir / "run_bad") +
+                              " --prepare-only --restart-every -1 > /dev/null 2>&1";
+  EXPECT_NE(std::system(cmd_bad.c_str()), 0);
+  fs::remove_all(dir);
+}
+
 TEST(LiggghtsResume, KilledRunResumesToTheSameResult) {
   const fs::path dir = brash::test::fresh_dir("resume");
   write_small_case(dir / "case", "[0.2, 0.6]", "0.01", "");

@@ -219,7 +219,7 @@ int main(int argc, char** argv) {
   CLI::App app{"brash-liggghts-run: run a case directory with LIGGGHTS and write the brash run layout"};
   fs::path case_dir, out_dir, runs_root = "runs";
   int ranks = 1;
-  double duration = -1;
+  double duration = -1, restart_every_s = -1;
   std::string model, treatment;
   bool no_post = false, prepare_only = false;
   fs::path resume_dir;
@@ -233,6 +233,9 @@ int main(int argc, char** argv) {
   app.add_option("--duration", duration, "simulated time [s] (default: the case's run.duration_s)");
   app.add_option("--model", model, "override fluid.model: drag | added_mass | both");
   app.add_option("--treatment", treatment, "override fluid.treatment: implicit | explicit");
+  app.add_option("--restart-every", restart_every_s,
+                 "model time [s] between restart files (default: a tenth of the run; also on --resume)")
+      ->check(CLI::PositiveNumber);
   app.add_flag("--no-post", no_post, "do not run brash-post afterwards");
   app.add_flag("--prepare-only", prepare_only, "write the run directory's inputs (in.lmp, packing.data, hull.stl) and stop");
   CLI11_PARSE(app, argc, argv);
@@ -315,7 +318,8 @@ int main(int argc, char** argv) {
     opt.ranks = ranks;
     opt.hull_x_min_m = xmin;
     opt.hull_x_max_m = xmax;
-    opt.restart_every_steps = std::max(1L, std::lround(run_duration / 10 / c.run.timestep_s));
+    opt.restart_every_steps = std::max(
+        1L, std::lround((restart_every_s > 0 ? restart_every_s : run_duration / 10) / c.run.timestep_s));
     if (!resume) brash::run::write_atomic(run_dir / "in.lmp", brash::liggghts::input_script(c, box, opt));
 
     if (prepare_only) {
