@@ -3,7 +3,7 @@
 # quick case's scene (same packing, hull band, contacts). Prints ratios measured in this one run.
 #   instructions: callgrind, N steps, bare scene (fix icefluid removed) vs the same scene with it;
 #                 plus the inclusive share of FixIceFluid::post_force in the run with it.
-#   throughput:   loop time of M steps on 1 and 2 ranks (paired, same sitting).
+#   throughput:   loop time of M steps on 1 and 2 ranks (paired, same sitting); BENCH_THROUGHPUT_STEPS=0 skips it.
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 bin="${BRASH_BIN:-$here/build/bin}"
@@ -42,6 +42,7 @@ awk -v a="$ir_without" -v b="$ir_with" -v f="${ir_fix:-0}" -v n="$atoms" -v s="$
   printf "plugin overhead          %.2f %% = fix instructions / all other instructions of the same run (goal <= 3 %%)\n", 100*f/(b-f);
 }'
 
+if [ "$steps_tp" = 0 ]; then exit 0; fi  # BENCH_THROUGHPUT_STEPS=0: instruction counts only
 echo "== throughput ($steps_tp steps)"
 mk_input "$steps_tp" with > in_tp.lmp
 loop() { awk '/^Loop time of/ && !n++ {print $4}' "$1"; }

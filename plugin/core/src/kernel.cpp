@@ -1,6 +1,7 @@
 // Specialised array kernel (see kernel.hpp). One template instance per (drag?, added mass?, implicit?).
 #include "brash/core/kernel.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -9,16 +10,36 @@
 namespace brash::core {
 namespace {
 
-// kReplay and kMasked are hoisted out of the loop (template parameters, not per-sphere branches): the
-// normal step (no replay, group all) then costs only the physics. Scalars instead of small arrays keep
-// everything in registers.
-template <bool kDrag, bool kAddedMass, bool kImplicit, bool kReplay, bool kMasked, bool kSymXY>
+// Ca of a wetted sphere (h > 0): Table 1 row by immersion and reversal; partly submerged and not
+// reversed, Ca_z grows with the immersed height (fluid.hpp).
+struct CaRow {
+  double x, y, z;
+};
+inline CaRow wetted_ca(const CaTable& t, double h, double two_r, bool reversed) {
+  if (h >= two_r) {
+    const Vec3& c = reversed ? t.submerged_reversed : t.submerged;
+    return {c.x(), c.y(), c.z()};
+  }
+  if (reversed) return {t.partial_reversed.x(), t.partial_reversed.y(), t.partial_reversed.z()};
+  return {t.partial.x(), t.partial.y(), t.partial.z() * h / two_r};
+}
+
+// State flag [3]: 0 = never evaluated, 1 = evaluated, 2 = evaluated and the motion was reversed.
+inline bool reversed_flag(const double* st) { return st[3] > 1.5; }
+inline constexpr double kEvaluatedFlag[2] = {1.0, 2.0};  // indexed by the reversal: a load, not a select
+
+// kReplay, kMasked and kGravity are hoisted out of the loop (template parameters, not per-sphere branches):
+// the normal step (no replay, group all, the engine's own gravity) then costs only the physics. Scalars
+// instead of small arrays keep everything in registers. The per-atom output is filled by a separate pass
+// (fill_output) on the steps that need it.
+template <bool kDrag, bool kAddedMass, bool kImplicit, bool kReplay, bool kMasked, bool kSymXY, bool kGravity>
 void kernel(const FluidParams& p, const KernelArrays& a, double dt_s) {
-  constexpr double kPi = std::numbers::pi;
+  constexpr double kPiOver3 = std::numbers::pi / 3.0;
   const double rho = p.water_density_kg_m3;
-  const double rho_g = rho * p.gravity_m_s2;
+  const double rho_pi3 = rho * kPiOver3;                     // V_s = pi/3 h^2 (3r - h)
+  const double rho_g_pi3 = rho * p.gravity_m_s2 * kPiOver3;  // buoyancy per h^2 (3r - h)
   const double zw = p.water_level_m;
-  const double g_applied = p.apply_gravity ? p.gravity_m_s2 : 0.0;
+  const double g = p.gravity_m_s2;
   const double inv_dt = dt_s > 0 ? 1.0 / dt_s : 0.0;
   const CaTable& t = p.ca;
   const double ux0 = p.flow_velocity_m_s.x(), uy0 = p.flow_velocity_m_s.y(), uz0 = p.flow_velocity_m_s.z();
@@ -39,7 +60,7 @@ void kernel(const FluidParams& p, const KernelArrays& a, double dt_s) {
     double ax = 0, ay = 0, az = 0;
     if (replaying) {
       vx = st[0], vy = st[1], vz = st[2];
-      reversed = st[4] != 0.0;
+      reversed = reversed_flag(st);
       ax = st[5], ay = st[6], az = st[7];
     } else {
       const double* vv = a.v_m_s + 3 * i;
@@ -52,14 +73,16 @@ void kernel(const FluidParams& p, const KernelArrays& a, double dt_s) {
     }
 
     const double two_r = 2.0 * r;
-    double h = zw - z + r;
-    h = h < 0.0 ? 0.0 : (h > two_r ? two_r : h);
-    const double vs = kPi / 3.0 * h * h * (3.0 * r - h);
-    double Fx = 0.0, Fy = 0.0, Fz = rho_g * vs - m * g_applied;
-    double cax = 0.0, cay = 0.0, caz = 0.0;
+    // min/max in this operand order compile to minsd/maxsd and keep a NaN height NaN (the guards see it)
+    const double h = std::min(std::max(zw - z + r, 0.0), two_r);
+    const double h2_3r_minus_h = h * h * (3.0 * r - h);  // 3 V_s / pi
+    double Fx = 0.0, Fy = 0.0, Fz = rho_g_pi3 * h2_3r_minus_h;
+    if constexpr (kGravity) Fz -= m * g;
     double sx = 1.0, sy = 1.0, sz = 1.0;
 
-    if (h > 0.0) {
+    // Implicit added mass alone needs no dry-sphere branch: at h = 0, V_s = 0 and every scale is exactly 1.
+    constexpr bool kWetTest = kDrag || !kImplicit;
+    if (!kWetTest || h > 0.0) {
       if constexpr (kDrag) {
         const double ux = vx - ux0, uy = vy - uy0, uz = vz - uz0;
         const double speed2 = ux * ux + uy * uy + uz * uz;
@@ -82,28 +105,19 @@ void kernel(const FluidParams& p, const KernelArrays& a, double dt_s) {
         }
       }
       if constexpr (kAddedMass) {
-        if (h >= two_r) {
-          const Vec3& c = reversed ? t.submerged_reversed : t.submerged;
-          cax = c.x(), cay = c.y(), caz = c.z();
-        } else if (reversed) {
-          cax = t.partial_reversed.x(), cay = t.partial_reversed.y(), caz = t.partial_reversed.z();
-        } else {
-          cax = t.partial.x(), cay = t.partial.y(), caz = t.partial.z() * h / two_r;
-        }
-        const double rho_vs = rho * vs;
+        const CaRow ca = wetted_ca(t, h, two_r, reversed);
+        const double rho_vs = rho_pi3 * h2_3r_minus_h;
         if constexpr (kImplicit) {
-          sx = m / (m + rho_vs * cax);
+          sx = m / (m + rho_vs * ca.x);
           if constexpr (kSymXY)
             sy = sx;
           else
-            sy = m / (m + rho_vs * cay);
-          sz = m / (m + rho_vs * caz);
+            sy = m / (m + rho_vs * ca.y);
+          sz = m / (m + rho_vs * ca.z);
         } else {
-          Fx -= rho_vs * cax * ax, Fy -= rho_vs * cay * ay, Fz -= rho_vs * caz * az;
+          Fx -= rho_vs * ca.x * ax, Fy -= rho_vs * ca.y * ay, Fz -= rho_vs * ca.z * az;
         }
       }
-    } else if constexpr (kAddedMass) {
-      cax = t.above.x(), cay = t.above.y(), caz = t.above.z();
     }
 
     if constexpr (kDrag || !kAddedMass || !kImplicit) {
@@ -115,14 +129,28 @@ void kernel(const FluidParams& p, const KernelArrays& a, double dt_s) {
     if (!replaying) {
       // Implicit added mass alone never reads the horizontal velocity back (no drag, no lagged acceleration).
       if constexpr (kDrag || !kImplicit) st[0] = vx, st[1] = vy;
-      st[2] = vz, st[3] = 1.0, st[4] = reversed ? 1.0 : 0.0;
+      st[2] = vz, st[3] = kEvaluatedFlag[reversed];
       if constexpr (!kImplicit) st[5] = ax, st[6] = ay, st[7] = az;
     }
-    if (a.output) {
-      double* o = a.output + kOutputStride * i;
-      o[0] = h * h * (3.0 * r - h) / (4.0 * r * r * r);
-      o[1] = cax, o[2] = cay, o[3] = caz;
+  }
+}
+
+// Per-atom output of the last evaluation (submerged fraction, Ca used), from positions and the state flag.
+void fill_output(const FluidParams& p, const KernelArrays& a) {
+  const bool added_mass = p.model != FluidModel::Drag;
+  for (std::size_t i = 0; i < a.n; ++i) {
+    if (a.mask && !(a.mask[i] & a.groupbit)) continue;
+    const double r = a.radius_m[i];
+    const double two_r = 2.0 * r;
+    const double h = std::min(std::max(p.water_level_m - a.x_m[3 * i + 2] + r, 0.0), two_r);
+    double* o = a.output + kOutputStride * i;
+    o[0] = h * h * (3.0 * r - h) / (4.0 * r * r * r);
+    CaRow ca{0.0, 0.0, 0.0};
+    if (added_mass) {
+      ca = h > 0.0 ? wetted_ca(p.ca, h, two_r, reversed_flag(a.state + kStateStride * i))
+                   : CaRow{p.ca.above.x(), p.ca.above.y(), p.ca.above.z()};
     }
+    o[1] = ca.x, o[2] = ca.y, o[3] = ca.z;
   }
 }
 
@@ -133,31 +161,38 @@ bool symmetric_xy(const CaTable& t) {
   return true;
 }
 
-template <bool kDrag, bool kAddedMass, bool kImplicit, bool kSymXY>
+template <bool kDrag, bool kAddedMass, bool kImplicit, bool kSymXY, bool kGravity>
 void dispatch_loop(const FluidParams& p, const KernelArrays& a, double dt_s, bool replay) {
   if (replay) {
-    if (a.mask) return kernel<kDrag, kAddedMass, kImplicit, true, true, kSymXY>(p, a, dt_s);
-    return kernel<kDrag, kAddedMass, kImplicit, true, false, kSymXY>(p, a, dt_s);
+    if (a.mask) return kernel<kDrag, kAddedMass, kImplicit, true, true, kSymXY, kGravity>(p, a, dt_s);
+    return kernel<kDrag, kAddedMass, kImplicit, true, false, kSymXY, kGravity>(p, a, dt_s);
   }
-  if (a.mask) return kernel<kDrag, kAddedMass, kImplicit, false, true, kSymXY>(p, a, dt_s);
-  return kernel<kDrag, kAddedMass, kImplicit, false, false, kSymXY>(p, a, dt_s);
+  if (a.mask) return kernel<kDrag, kAddedMass, kImplicit, false, true, kSymXY, kGravity>(p, a, dt_s);
+  return kernel<kDrag, kAddedMass, kImplicit, false, false, kSymXY, kGravity>(p, a, dt_s);
+}
+
+template <bool kDrag, bool kAddedMass, bool kImplicit, bool kSymXY>
+void dispatch_gravity(const FluidParams& p, const KernelArrays& a, double dt_s, bool replay) {
+  if (p.apply_gravity) return dispatch_loop<kDrag, kAddedMass, kImplicit, kSymXY, true>(p, a, dt_s, replay);
+  dispatch_loop<kDrag, kAddedMass, kImplicit, kSymXY, false>(p, a, dt_s, replay);
 }
 
 template <bool kDrag, bool kAddedMass>
 void dispatch_treatment(const FluidParams& p, const KernelArrays& a, double dt_s, bool replay) {
-  if (p.treatment == Treatment::Explicit) return dispatch_loop<kDrag, kAddedMass, false, false>(p, a, dt_s, replay);
-  if (kAddedMass && symmetric_xy(p.ca)) return dispatch_loop<kDrag, kAddedMass, true, true>(p, a, dt_s, replay);
-  dispatch_loop<kDrag, kAddedMass, true, false>(p, a, dt_s, replay);
+  if (p.treatment == Treatment::Explicit) return dispatch_gravity<kDrag, kAddedMass, false, false>(p, a, dt_s, replay);
+  if (kAddedMass && symmetric_xy(p.ca)) return dispatch_gravity<kDrag, kAddedMass, true, true>(p, a, dt_s, replay);
+  dispatch_gravity<kDrag, kAddedMass, true, false>(p, a, dt_s, replay);
 }
 
 }  // namespace
 
 void apply_kernel(const FluidParams& p, const KernelArrays& a, double dt_s, bool replay) {
   switch (p.model) {
-    case FluidModel::Drag: return dispatch_treatment<true, false>(p, a, dt_s, replay);
-    case FluidModel::AddedMass: return dispatch_treatment<false, true>(p, a, dt_s, replay);
-    case FluidModel::Both: return dispatch_treatment<true, true>(p, a, dt_s, replay);
+    case FluidModel::Drag: dispatch_treatment<true, false>(p, a, dt_s, replay); break;
+    case FluidModel::AddedMass: dispatch_treatment<false, true>(p, a, dt_s, replay); break;
+    case FluidModel::Both: dispatch_treatment<true, true>(p, a, dt_s, replay); break;
   }
+  if (a.output) fill_output(p, a);
 }
 
 }  // namespace brash::core

@@ -6,8 +6,9 @@
 // Arrays are row-major and contiguous (LIGGGHTS' double** point at one block: pass x[0]).
 // Per-sphere state, kStateStride doubles owned by the engine (migrates and goes into restarts; a new
 // sphere's row must be all zero):
-//   [0..2] velocity used at the last evaluation (x, y only with drag or explicit)   [3] 1 once evaluated
-//   [4] 1 if the last evaluation saw a reversal     [5..7] acceleration used by the explicit treatment
+//   [0..2] velocity used at the last evaluation (x, y only with drag or explicit)
+//   [3] 0 never evaluated, 1 evaluated, 2 evaluated and the last evaluation saw a reversal (one store
+//       for both flags)   [4] unused   [5..7] acceleration used by the explicit treatment
 // With `replay` (start of a run), spheres that have a state re-evaluate their last step from it
 // (same position, same velocity, same reversal and acceleration) and keep the state: a restarted
 // run continues exactly like an uninterrupted one.
@@ -29,7 +30,7 @@ struct KernelArrays {
   const double* v_m_s = nullptr;  // n x 3
   double* f_N = nullptr;          // n x 3: every other force on entry, the total on exit
   double* state = nullptr;        // n x kStateStride
-  double* output = nullptr;       // n x kOutputStride, or null
+  double* output = nullptr;       // n x kOutputStride, or null (filled by a pass after the forces)
   const int* mask = nullptr;      // null = all spheres; else sphere i is used if mask[i] & groupbit
   int groupbit = 0;
 };
