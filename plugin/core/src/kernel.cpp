@@ -60,7 +60,10 @@ void kernel(const FluidParams& p, const KernelArrays& a, double dt_s) {
     double ax = 0, ay = 0, az = 0;
     if (replaying) {
       vx = st[0], vy = st[1], vz = st[2];
-      reversed = reversed_flag(st);
+      // Restart files written before the flags were merged hold the reversal in [4]: read it, and store the
+      // row in the current layout (same content; replay steps only, so the normal step pays nothing).
+      reversed = reversed_flag(st) || st[4] != 0.0;
+      st[3] = kEvaluatedFlag[reversed], st[4] = 0.0;
       ax = st[5], ay = st[6], az = st[7];
     } else {
       const double* vv = a.v_m_s + 3 * i;

@@ -8,7 +8,8 @@
 // sphere's row must be all zero):
 //   [0..2] velocity used at the last evaluation (x, y only with drag or explicit)
 //   [3] 0 never evaluated, 1 evaluated, 2 evaluated and the last evaluation saw a reversal (one store
-//       for both flags)   [4] unused   [5..7] acceleration used by the explicit treatment
+//       for both flags)   [4] 0 (the reversal flag of the older layout, still read on replay so that
+//       older restart files continue exactly)   [5..7] acceleration used by the explicit treatment
 // With `replay` (start of a run), spheres that have a state re-evaluate their last step from it
 // (same position, same velocity, same reversal and acceleration) and keep the state: a restarted
 // run continues exactly like an uninterrupted one.
