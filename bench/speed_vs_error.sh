@@ -20,6 +20,11 @@ all_knobs=(
   "symmetry_y:speedups.symmetry_y=true"
   "dt_x2:run.timestep_s=2.0e-4"
   "skin_0.4d:speedups.neighbor_skin_d=0.4"
+  "stiff_E_x4:contact.youngs_modulus_pa=2.0e7"
+  "soft_E_div4_dt_x2:contact.youngs_modulus_pa=1.25e6,run.timestep_s=2.0e-4"
+  "restitution_0.1:contact.restitution=0.1"
+  "restitution_0.6:contact.restitution=0.6"
+  "output_0.05s:run.output_interval_s=0.05"
   "combined:speedups.farfield=true,speedups.farfield_ahead_m=0.3,speedups.farfield_behind_m=1.0,run.timestep_s=2.0e-4"
   "all_fast:speedups.farfield=true,speedups.farfield_ahead_m=0.3,speedups.farfield_behind_m=1.0,speedups.symmetry_y=true,run.timestep_s=2.0e-4"
 )
