@@ -19,12 +19,10 @@ work="$(mktemp -d /tmp/brash-paperbench-XXXX)"
 trap 'rm -rf "$work"' EXIT
 cp "$restart" "$work/start.restart"
 cp "$run_dir"/hull*.stl "$work/"
-sed -e 's|^read_restart .*|read_restart start.restart|' -e '/^fix hf /d' -e '/^dump/d' -e '/^restart /d' \
+sed -e 's|^read_data packing.data|read_restart start.restart|' -e '/^fix hf /d' -e '/^dump/d' -e '/^restart /d' \
     -e '/^write_restart/d' -e "s/^run .*/run $steps/" "$run_dir/in.lmp" > "$work/in_on.lmp"
 sed -e '/^fix farfield/d' -e 's/^group idle subtract all all/group idle delete/' \
     -e 's/^neigh_modify delay 0 exclude group idle idle/neigh_modify delay 0/' "$work/in_on.lmp" > "$work/in_off.lmp"
-grep -q '^read_restart start.restart' "$work/in_on.lmp" || sed -i 's|^read_data packing.data|read_restart start.restart|' \
-  "$work/in_on.lmp" "$work/in_off.lmp"
 cd "$work"
 loop() {  # $1 input, $2 ranks -> loop time [s]
   if [ "$2" = 1 ]; then "$bin/brash-liggghts" -in "$1" -log "log_$1_$2.txt" > /dev/null 2>&1

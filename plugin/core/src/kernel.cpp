@@ -5,13 +5,14 @@
 #include <cmath>
 #include <numbers>
 
+#include "brash/core/fluid.hpp"
 #include "brash/core/immersion.hpp"
 
 namespace brash::core {
 namespace {
 
-// Ca of a wetted sphere (h > 0): Table 1 row by immersion and reversal; partly submerged and not
-// reversed, Ca_z grows with the immersed height (fluid.hpp).
+// Ca of a wetted sphere (h > 0): select_ca() of fluid.hpp without its dry branch and with scalars, for the
+// hot loop (the implicit added-mass path has no dry-sphere test at all).
 struct CaRow {
   double x, y, z;
 };
@@ -139,21 +140,16 @@ void kernel(const FluidParams& p, const KernelArrays& a, double dt_s) {
 }
 
 // Per-atom output of the last evaluation (submerged fraction, Ca used), from positions and the state flag.
+// Not on the hot path: the readable immersion() and select_ca() of the reference serve.
 void fill_output(const FluidParams& p, const KernelArrays& a) {
   const bool added_mass = p.model != FluidModel::Drag;
   for (std::size_t i = 0; i < a.n; ++i) {
     if (a.mask && !(a.mask[i] & a.groupbit)) continue;
     const double r = a.radius_m[i];
-    const double two_r = 2.0 * r;
-    const double h = std::min(std::max(p.water_level_m - a.x_m[3 * i + 2] + r, 0.0), two_r);
+    const Immersion im = immersion(r, a.x_m[3 * i + 2], p.water_level_m);
+    const Vec3 ca = added_mass ? select_ca(p.ca, r, im, reversed_flag(a.state + kStateStride * i)) : Vec3::Zero();
     double* o = a.output + kOutputStride * i;
-    o[0] = h * h * (3.0 * r - h) / (4.0 * r * r * r);
-    CaRow ca{0.0, 0.0, 0.0};
-    if (added_mass) {
-      ca = h > 0.0 ? wetted_ca(p.ca, h, two_r, reversed_flag(a.state + kStateStride * i))
-                   : CaRow{p.ca.above.x(), p.ca.above.y(), p.ca.above.z()};
-    }
-    o[1] = ca.x, o[2] = ca.y, o[3] = ca.z;
+    o[0] = im.fraction, o[1] = ca.x(), o[2] = ca.y(), o[3] = ca.z();
   }
 }
 
