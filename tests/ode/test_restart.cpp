@@ -142,6 +142,32 @@ TEST_F(Restart, TruncatedNewestRestartFallsBackToThePreviousOne) {
   expect_same_as_a(d, "newest restart truncated, resume from 80");
 }
 
+// --cull with frozen spheres left out of collision detection (the default) vs kept in it (--cull-keep-geoms):
+// the same contacts, so the same run to the last bit; and a resume restores the left-out set.
+TEST_F(Restart, CullGeomsGiveTheSameRunAndResume) {
+  const std::string cull = " --cull --cull-ahead 0.02 --cull-behind 0.02 --cull-side 0";
+  const fs::path f = kRoot / "F", g = kRoot / "G", h = kRoot / "H";
+  ASSERT_EQ(run(base_cmd(f) + cull + " > /dev/null"), 0);
+  ASSERT_EQ(run(base_cmd(g) + cull + " --cull-keep-geoms > /dev/null"), 0);
+  const std::string meta_f = slurp(f / "meta.json"), meta_g = slurp(g / "meta.json");
+  const auto out_max = [](const std::string& meta) {
+    const auto p = meta.find("\"cull_geoms_out_max\": ");
+    return p == std::string::npos ? -1L : std::stol(meta.substr(p + 22));
+  };
+  std::printf("[cull geoms] at most %ld of 720 frozen spheres out of collision detection\n", out_max(meta_f));
+  EXPECT_GT(out_max(meta_f), 20);  // the scene really had spheres deep in the frozen zone beside the hull
+  EXPECT_EQ(out_max(meta_g), 0);
+  EXPECT_EQ(slurp(f / "hull_force.csv"), slurp(g / "hull_force.csv"));
+  EXPECT_EQ(slurp(f / "particles" / "particles_400.csv"), slurp(g / "particles" / "particles_400.csv"));
+  EXPECT_NE(slurp(f / "hull_force.csv"), slurp(kRoot / "A" / "hull_force.csv"));  // culling did act
+  ASSERT_EQ(run(base_cmd(h) + cull + " --crash-after-step 230"), 137);
+  ASSERT_EQ(run(resume_cmd(h)), 0);
+  // As for the plain resume (expect_same_as_a): a resumed run matches to the dumps' printed digits.
+  EXPECT_LE(max_diff(f / "hull_force.csv", h / "hull_force.csv", 1, 4), 1e-6);
+  EXPECT_LE(max_diff(f / "particles" / "particles_400.csv", h / "particles" / "particles_400.csv", 1, 4), 1e-9);
+  EXPECT_LE(max_diff(f / "particles" / "particles_400.csv", h / "particles" / "particles_400.csv", 5, 8), 1e-6);
+}
+
 TEST_F(Restart, NoUsableRestartFileIsAClearError) {
   const fs::path e = kRoot / "E";
   ASSERT_EQ(run(base_cmd(e) + " --crash-after-step 100"), 137);

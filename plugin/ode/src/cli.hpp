@@ -32,6 +32,10 @@ inline void add_run_options(CLI::App& app, RunOptions& o, std::string& implicit_
       ->capture_default_str();
   app.add_option("--cull-behind", o.skips.cull_behind_m, "cull/auto-disable: active distance behind the stern [m]")
       ->capture_default_str();
+  app.add_option("--cull-side", o.skips.cull_side_m,
+                 "cull/auto-disable: active distance beside the hull's half beam [m] (default: the whole width)");
+  app.add_flag("!--cull-keep-geoms", o.skips.cull_geoms,
+               "cull: keep every frozen sphere in collision detection (slower, same contacts; for checking)");
   app.add_flag("--end-walls", o.end_walls, "walls at x = 0 and x = channel length (LIGGGHTS has side walls only)");
   app.add_option("--settle", o.settle_s, "settle the bed this long [s] with the hull parked before t = 0")
       ->capture_default_str();

@@ -161,6 +161,7 @@ nlohmann::json options_json(const RunOptions& o) {
           {"cull_behind_m", k.cull_behind_m},
           {"cull_side_m", k.cull_side_m},
           {"cull_every", k.cull_every},
+          {"cull_geoms", k.cull_geoms},
           {"implicit", o.implicit_mode == ImplicitMode::EffectiveMass ? "effective_mass" : "scale_forces"},
           {"end_walls", o.end_walls},
           {"settle_s", o.settle_s},
@@ -203,6 +204,7 @@ RunOptions options_from_meta(const fs::path& run_dir, const RunOptions& cli) {
     o.skips.cull_behind_m = j.at("cull_behind_m");
     o.skips.cull_side_m = j.at("cull_side_m");
     o.skips.cull_every = j.at("cull_every");
+    o.skips.cull_geoms = j.value("cull_geoms", true);  // runs before the switch existed: same contacts either way
     o.implicit_mode = j.at("implicit") == "scale_forces" ? ImplicitMode::ScaleForces : ImplicitMode::EffectiveMass;
     o.end_walls = j.at("end_walls");
     o.settle_s = j.at("settle_s");
@@ -539,6 +541,7 @@ RunResult run_case(const RunOptions& cli_options) {
                             {"collide", res.stats.wall_collide_s - stats0.wall_collide_s},
                             {"quickstep", res.stats.wall_step_s - stats0.wall_step_s}};
     meta["mean_fx_window_N"] = res.mean_fx_window_N;
+    meta["cull_geoms_out_max"] = res.stats.geoms_out_max;
     logln(fmt::format("done: {} steps in {:.1f} s ({:.3g} particle-steps/s, {:.1f} s wall per simulated s); "
                       "mean Fx over [{}, {}] s = {:.4f} N",
                       steps - k0, res.loop_time_s, ps_this / res.loop_time_s,

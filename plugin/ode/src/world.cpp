@@ -83,6 +83,7 @@ void World::set_ode_mass(SphereRec& s, double M) {
 std::size_t World::add_sphere(const Vec3& p, double radius_m, double density_kg_m3, const Vec3& v) {
   SphereRec s;
   s.radius_m = radius_m;
+  max_radius_m_ = std::max(max_radius_m_, radius_m);
   s.mass_kg = density_kg_m3 * 4.0 / 3.0 * std::numbers::pi * radius_m * radius_m * radius_m;
   s.inertia = 0.4 * s.mass_kg * radius_m * radius_m;
   s.body = dBodyCreate(world_);
@@ -177,9 +178,15 @@ void World::update_cull() {
   const double lo = h.x() + hull_min_[0] - skips_.cull_behind_m;
   const double hi = h.x() + hull_max_[0] + skips_.cull_ahead_m;
   const double side = hull_half_beam() + skips_.cull_side_m;
+  // Between two updates an active sphere stays within a diameter of the window (it moves < 1 cm in
+  // cull_every steps); 3 diameters keep every frozen sphere it can touch in the broad phase.
+  const double margin = 6.0 * max_radius_m_;
+  const bool cull_geoms = skips_.cull && skips_.cull_geoms;
+  std::size_t geoms_out = 0;
   for (auto& s : spheres_) {
     const dReal* p = dBodyGetPosition(s.body);
-    const bool far = p[0] < lo || p[0] > hi || std::abs(p[1] - h.y()) > side;
+    const double dy = std::abs(p[1] - h.y());
+    const bool far = p[0] < lo || p[0] > hi || dy > side;
     if (skips_.cull) {
       if (far && !s.culled) {
         s.culled = true;
@@ -191,12 +198,21 @@ void World::update_cull() {
         s.state = {};
         dBodyEnable(s.body);
       }
+      if (cull_geoms) {
+        const bool deep = s.culled && (p[0] < lo - margin || p[0] > hi + margin || dy > side + margin);
+        geoms_out += deep ? 1 : 0;
+        if (deep == (dGeomIsEnabled(s.geom) != 0)) {
+          if (deep) dGeomDisable(s.geom);
+          else dGeomEnable(s.geom);
+        }
+      }
     }
     if (skips_.auto_disable && skips_.auto_disable_far_only) {
       dBodySetAutoDisableFlag(s.body, far ? 1 : 0);
       if (!far && !s.culled && !dBodyIsEnabled(s.body)) dBodyEnable(s.body);
     }
   }
+  stats_.geoms_out_max = std::max(stats_.geoms_out_max, geoms_out);
 }
 
 void World::apply_fluid() {
