@@ -397,6 +397,117 @@ void section_paper(Study& s, std::string& md) {
   md += "\n";
 }
 
+// Runs `gnuplot GP` in GP's folder (file names in the script are relative to it, so it can be re-run there).
+// Returns "" on success, else what went wrong (the script's stderr is kept in GP.err).
+std::string run_gnuplot(const fs::path& gp, const fs::path& png) {
+  const fs::path dir = fs::absolute(gp).parent_path();
+  const int rc = std::system(fmt::format("cd '{}' && gnuplot '{}' 2>'{}.err'", dir.string(), gp.filename().string(),
+                                         gp.filename().string())
+                                 .c_str());
+  if (rc == 0 && fs::exists(png)) {
+    std::error_code ec;
+    if (fs::file_size(gp.string() + ".err", ec) == 0 && !ec) fs::remove(gp.string() + ".err", ec);
+    return "";
+  }
+  return fmt::format("`gnuplot {}` failed (exit {}); see `{}.err`", gp.string(), rc, gp.string());
+}
+
+// Fig. 4, 5 and 6 analogs for the runs of section (a), next to the document in FIG_DIR (its previous content is
+// replaced): a bar chart of every run's full-scale resistance with its CI against the paper's numbers and our
+// R_CH (Fig. 6), and each run's own force history (Fig. 5) and ice views from above and below (Fig. 4, first
+// run of each engine), copied from the run directories that brash-post wrote them to.
+void section_figures(Study& s, std::string& md, const fs::path& fig_dir, const fs::path& doc_dir) {
+  md += "### Figures (analogs of the paper's Fig. 4, 5 and 6)\n\n";
+  std::vector<const Run*> runs;
+  std::set<std::string> seen;
+  bool any_paper = false;
+  for (const auto& row : s.rows) {
+    if (row.group != "paper") continue;
+    const Run& r = s.run_of(row);
+    if (!r.ok || !seen.insert(r.ref).second) continue;
+    runs.push_back(&r);
+    any_paper = any_paper || r.base_case == "jbc_ia_5kn";
+  }
+  if (runs.empty()) {
+    md += "No completed run in section (a): no figures.\n\n";
+    return;
+  }
+  std::error_code ec;
+  fs::remove_all(fig_dir, ec);
+  fs::create_directories(fig_dir);
+  const std::string rel =
+      fs::relative(fs::absolute(fig_dir), fs::absolute(doc_dir.empty() ? fs::path(".") : doc_dir), ec).string();
+  const auto link = [&](const std::string& f) { return rel.empty() || rel == "." ? f : rel + "/" + f; };
+  // Fig. 6 analog
+  const fs::path dat = fig_dir / "paper_bars.dat", gp = fig_dir / "paper_bars.gp", png = fig_dir / "paper_bars.png";
+  {
+    constexpr long kOurs = 0x5a9fd4, kRule = 0xcd6155, kPaper = 0xc8c8c8;
+    std::ofstream d(dat);
+    d << "# label  full-scale resistance [kN]  CI95 [kN]  colour\n";
+    using PV = brash::post::PaperValues;
+    for (const Run* r : runs)
+      d << fmt::format("\"{} {} {}\" {} {} {}\n", r->ref, r->engine, r->model, r->full_kN, r->full_ci_kN, kOurs);
+    d << fmt::format("\"paper added mass\" {} 0 {}\n\"paper drag\" {} 0 {}\n", PV::added_mass_full_kN, kPaper,
+                     PV::drag_full_kN, kPaper);
+    std::set<long> rch;
+    for (const Run* r : runs)
+      if (r->rch_kN && rch.insert(std::lround(*r->rch_kN)).second)
+        d << fmt::format("\"FSICR R_CH ours ({})\" {} 0 {}\n", r->ref, *r->rch_kN, kRule);
+    d << fmt::format("\"paper FSICR R_CH\" {} 0 {}\n", PV::fsicr_R_CH_kN, kPaper);
+    std::ofstream p(gp);
+    p << "set terminal pngcairo size 1100,650\nset output '" << png.filename().string() << "'\n"
+      << "set termoption noenhanced\nset style fill solid 0.85 border -1\nset boxwidth 0.6\nset grid ytics\n"
+      << "set yrange [0:*]\nset xtics rotate by -30 scale 0\nset bmargin 9\n"
+      << "set ylabel 'full-scale resistance [kN] (model x lambda^3)'\n"
+      << "set title '" << (any_paper ? "Full-scale resistance, our runs with CI95 vs the paper (Fig. 6 analog)"
+                                     : "Full-scale resistance (Fig. 6 analog): REDUCED-CASE runs, not the paper case")
+      << "'\nplot '" << dat.filename().string() << "' using 0:2:(0.6):4:xtic(1) with boxes lc rgb variable notitle, \\\n"
+      << "     '' using 0:2:3 with yerrorbars lc rgb 'black' pt 7 ps 0 notitle\n";
+  }
+  const std::string err = run_gnuplot(gp, png);
+  if (err.empty())
+    md += fmt::format("![full-scale resistance vs the paper]({})\n\nFig. 6 analog: `{}` (data `{}`, script `{}`). Blue: "
+                      "our runs (CI95 bars); red: our FSICR R_CH from the measured hull; grey: the paper.\n\n",
+                      link(png.filename().string()), link(png.filename().string()), link(dat.filename().string()),
+                      link(gp.filename().string()));
+  else
+    md += "Fig. 6 analog not produced: " + err + ".\n\n";
+  // Fig. 5 and 4 analogs: the runs' own plots
+  std::set<std::string> engines_with_views;
+  for (const Run* r : runs) {
+    md += fmt::format("**{}** ({} {}, {}):", r->ref, r->engine, r->model, scale_label(*r));
+    const fs::path fh = r->run_dir / "force_history.png";
+    if (fs::exists(fh)) {
+      const std::string f = r->ref + "_force_history.png";
+      fs::copy_file(fh, fig_dir / f, fs::copy_options::overwrite_existing);
+      md += fmt::format("\n\n![{} force history]({})\n\nFig. 5 analog: hull force history x/y/z and the window mean "
+                        "(from `{}`).",
+                        r->ref, link(f), show_path(fh));
+    } else {
+      md += fmt::format(" no force_history.png in `{}` (run brash-post on it).", show_path(r->run_dir));
+    }
+    fs::path views;
+    if (!engines_with_views.count(r->engine) && fs::is_directory(r->run_dir))
+      for (const auto& e : fs::directory_iterator(r->run_dir)) {
+        const std::string n = e.path().filename().string();
+        if (n.rfind("ice_views_", 0) == 0 && e.path().extension() == ".png" && (views.empty() || e.path() > views))
+          views = e.path();
+      }
+    if (!views.empty()) {
+      engines_with_views.insert(r->engine);
+      const std::string f = r->ref + "_ice_views.png";
+      fs::copy_file(views, fig_dir / f, fs::copy_options::overwrite_existing);
+      md += fmt::format("\n\n![{} ice views]({})\n\nFig. 4 analog: the ice around the hull from above and below at "
+                        "the last dump (from `{}`).",
+                        r->ref, link(f), show_path(views));
+    }
+    if (fs::exists(r->run_dir / "particles.pvd"))
+      md += fmt::format(" ParaView: open `{}` and `{}`.", show_path(r->run_dir / "particles.pvd"),
+                        show_path(r->run_dir / "hull.pvd"));
+    md += "\n\n";
+  }
+}
+
 void section_speed(Study& s, std::string& md, const fs::path& plot_png, json& summary) {
   md += "## (b) Speed sweep: R ∝ U^n\n\n";
   std::vector<const Row*> rows;
@@ -481,17 +592,12 @@ void section_speed(Study& s, std::string& md, const fs::path& plot_png, json& su
     }
     p << "\n";
   }
-  // file names in the script are relative to its folder (the script can be re-run there)
-  const fs::path plot_dir = fs::absolute(plot_png).parent_path();
-  const int rc = std::system(fmt::format("cd '{}' && gnuplot '{}' 2>'{}.err'", plot_dir.string(), gp.filename().string(),
-                                         gp.filename().string()).c_str());
-  if (rc == 0 && fs::exists(plot_png)) {
-    std::error_code ec;
-    if (fs::file_size(gp.string() + ".err", ec) == 0 && !ec) fs::remove(gp.string() + ".err", ec);
+  const std::string err = run_gnuplot(gp, plot_png);
+  if (err.empty())
     md += fmt::format("![speed sweep]({})\n\nPlot: `{}` (data `{}`, script `{}`).\n\n", plot_png.filename().string(),
                       plot_png.filename().string(), dat.filename().string(), gp.filename().string());
-  } else
-    md += fmt::format("Plot not produced: `gnuplot {}` failed (exit {}); see `{}.err`.\n\n", gp.string(), rc, gp.string());
+  else
+    md += "Plot not produced: " + err + ".\n\n";
 }
 
 void section_sensitivity(Study& s, std::string& md) {
@@ -596,10 +702,13 @@ void section_runs(Study& s, std::string& md) {
 
 int main(int argc, char** argv) {
   CLI::App app{"brash-study-report: docs/study.md from a study manifest and the report.json of its runs"};
-  std::string manifest, out = "docs/study.md", plot, summary_path, title = "brash study", study_command;
+  std::string manifest, out = "docs/study.md", plot, figures, summary_path, title = "brash study", study_command;
   app.add_option("manifest", manifest, "study manifest (tab-separated, see the file header)")->required();
   app.add_option("--out", out, "markdown output")->capture_default_str();
   app.add_option("--plot", plot, "speed-sweep PNG (default: <out stem>_speed.png next to --out; 'none' = no plot)");
+  app.add_option("--figures", figures,
+                 "folder for the Fig. 4/5/6 analogs of section (a) (default: <out stem>_figs next to --out; "
+                 "'none' = no figures; its previous content is replaced)");
   app.add_option("--summary-json", summary_path, "also write the fits and run statuses as JSON");
   app.add_option("--title", title, "document title")->capture_default_str();
   app.add_option("--study-command", study_command, "the command that ran the whole study (shown at the top)");
@@ -624,6 +733,10 @@ int main(int argc, char** argv) {
           "scene (cases/jbc_bench and variants), not the paper's 417k-sphere channel.\n\n";
     section_failures(s, md);
     section_paper(s, md);
+    if (figures != "none")
+      section_figures(s, md,
+                      figures.empty() ? out_p.parent_path() / (out_p.stem().string() + "_figs") : fs::path(figures),
+                      out_p.parent_path());
     section_speed(s, md, plot_p, summary);
     section_sensitivity(s, md);
     section_engines(s, md);

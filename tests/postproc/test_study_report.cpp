@@ -147,6 +147,56 @@ TEST(StudyReport, TablesCarryValuesAndFailuresAreReported) {
   EXPECT_EQ(s["runs"].size(), 8u);
 }
 
+// Section (a)'s figures: the Fig. 6 analog bar chart (data with our runs, the paper's numbers and our R_CH) and
+// each run's own force history / newest ice views copied next to the document; the folder is replaced each time.
+TEST(StudyReport, FiguresOfThePaperSectionAreCopiedAndPlotted) {
+  const fs::path d = fresh_dir("figs");
+  write_report(d / "runs/am", "liggghts", "added_mass", 0.482, 12.5, 1.5);
+  write_report(d / "runs/ode", "ode", "drag", 0.482, 11.0, 1.0);
+  std::ofstream(d / "runs/am/force_history.png") << "force history of am";
+  std::ofstream(d / "runs/am/ice_views_000.50s.png") << "early views";
+  std::ofstream(d / "runs/am/ice_views_001.00s.png") << "late views";
+  std::string m = kHeader;
+  m += "p1\tpaper\tam\t\t\t1\tjbc_bench\t0\truns/am\tbrash-liggghts-run am\n";
+  m += "p2\tpaper\tode drag\t\t\t1\tjbc_bench\t0\truns/ode\tbrash-ode drag\n";
+  std::ofstream(d / "manifest.tsv") << m;
+  fs::create_directories(d / "doc/study_figs");
+  std::ofstream(d / "doc/study_figs/R9_stale.png") << "from an older study";
+  ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --plot none", (d / "manifest.tsv").string(),
+                                    (d / "doc/study.md").string())),
+            0)
+      << read(d / "tool.log");
+  const fs::path figs = d / "doc/study_figs";
+  EXPECT_FALSE(fs::exists(figs / "R9_stale.png"));
+  EXPECT_EQ(read(figs / "R1_force_history.png"), "force history of am");
+  EXPECT_EQ(read(figs / "R1_ice_views.png"), "late views");  // the newest dump's views
+  EXPECT_FALSE(fs::exists(figs / "R2_force_history.png"));  // the ODE run has none: said so in the text
+  const std::string dat = read(figs / "paper_bars.dat");
+  EXPECT_NE(dat.find("\"R1 liggghts added_mass\" " + fmt::format("{}", 12.5 * std::pow(28.5, 3) * 1.025 / 1000.0)),
+            std::string::npos)
+      << dat;
+  EXPECT_NE(dat.find("\"paper added mass\" 393 0"), std::string::npos);
+  EXPECT_NE(dat.find("\"paper drag\" 378 0"), std::string::npos);
+  EXPECT_NE(dat.find("\"FSICR R_CH ours (R1)\" 1327.25 0"), std::string::npos);  // one bar: both runs have the same
+  EXPECT_EQ(dat.find("FSICR R_CH ours (R2)"), std::string::npos);
+  EXPECT_NE(dat.find("\"paper FSICR R_CH\" 999 0"), std::string::npos);
+  EXPECT_NE(read(figs / "paper_bars.gp").find("REDUCED-CASE runs, not the paper case"), std::string::npos);
+  const std::string md = read(d / "doc/study.md");
+  EXPECT_NE(md.find("![R1 force history](study_figs/R1_force_history.png)"), std::string::npos) << md;
+  EXPECT_NE(md.find("![R1 ice views](study_figs/R1_ice_views.png)"), std::string::npos);
+  EXPECT_NE(md.find("no force_history.png in"), std::string::npos);
+  if (std::system("command -v gnuplot > /dev/null 2>&1") == 0) {
+    EXPECT_TRUE(fs::exists(figs / "paper_bars.png"));
+    EXPECT_NE(md.find("![full-scale resistance vs the paper](study_figs/paper_bars.png)"), std::string::npos);
+  }
+  // --figures none: no folder, no section content beyond the heading
+  fs::remove_all(figs);
+  ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --plot none --figures none", (d / "manifest.tsv").string(),
+                                    (d / "doc/study.md").string())),
+            0);
+  EXPECT_FALSE(fs::exists(figs));
+}
+
 TEST(StudyReport, BadManifestIsAnError) {
   const fs::path d = fresh_dir("bad");
   std::ofstream(d / "manifest.tsv") << "group\trun_dir\n";  // no command column
