@@ -61,9 +61,6 @@ std::string_view text_of(const EnumText<E> (&table)[N], E v) {
 
 std::string_view to_string(IceClass v) { return text_of(kIceClass, v); }
 std::string_view to_string(PackingMode v) { return text_of(kPackingMode, v); }
-std::string_view to_string(FluidModel v) { return text_of(kFluidModel, v); }
-std::string_view to_string(Treatment v) { return text_of(kTreatment, v); }
-std::string_view to_string(DragLaw v) { return text_of(kDragLaw, v); }
 std::string_view to_string(CaTable v) { return text_of(kCaTable, v); }
 std::string to_string(const CaTableSpec& v) {
   if (v.table == CaTable::Uniform) return fmt::format("uniform {}", v.uniform_ca);

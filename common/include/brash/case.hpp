@@ -14,13 +14,13 @@
 #include <string_view>
 #include <vector>
 
+#include "brash/fluid_options.hpp"
+
 namespace brash {
 
 enum class IceClass { IA_super, IA, IB, IC };
 enum class PackingMode { Volume, StrictTwoLayer };    // YAML: volume | strict_two_layer
-enum class FluidModel { Drag, AddedMass, Both };      // YAML: drag | added_mass | both
-enum class Treatment { Implicit, Explicit };          // YAML: implicit | explicit
-enum class DragLaw { Constant, SchillerNaumann };     // YAML: constant | schiller_naumann
+// FluidModel, Treatment, DragLaw and their spelling: brash/fluid_options.hpp (shared with brash::core).
 enum class CaTable { Table1, Text, Zero, Uniform };   // YAML: table1 | text | zero (Ca = 0) | uniform <Ca>
 
 // fluid.ca_table: a named added-mass table, or "uniform <Ca>" (the same Ca >= 0 on every axis in every
@@ -41,9 +41,6 @@ struct CaTableSpec {
 // YAML spelling of each enum value (the inverse is done by the loader, with an error on unknown text).
 std::string_view to_string(IceClass v);
 std::string_view to_string(PackingMode v);
-std::string_view to_string(FluidModel v);
-std::string_view to_string(Treatment v);
-std::string_view to_string(DragLaw v);
 std::string_view to_string(CaTable v);
 // YAML spelling of an added-mass table: "table1" | "text" | "zero" | "uniform <Ca>" (shortest exact number);
 // brash::core::parse_ca_table() and fix icefluid's `ca` keyword read the same text.

@@ -85,15 +85,4 @@ CaTable parse_ca_table(std::string_view s) {
       fmt::format("unknown added-mass table '{}' (expected table1 | text | zero | uniform <Ca >= 0>)", s));
 }
 
-std::string to_string(FluidModel m) {
-  switch (m) {
-    case FluidModel::Drag: return "drag";
-    case FluidModel::AddedMass: return "added_mass";
-    case FluidModel::Both: return "both";
-  }
-  return "?";
-}
-std::string to_string(Treatment t) { return t == Treatment::Explicit ? "explicit" : "implicit"; }
-std::string to_string(DragLaw d) { return d == DragLaw::Constant ? "constant" : "schiller_naumann"; }
-
 }  // namespace brash::core

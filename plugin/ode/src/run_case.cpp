@@ -115,9 +115,9 @@ core::FluidParams fluid_params(const Case& c) {
   p.water_level_m = c.water.level_m;
   p.gravity_m_s2 = c.water.gravity_m_s2;
   p.kinematic_viscosity_m2_s = c.water.kinematic_viscosity_m2_s;
-  p.model = core::parse_fluid_model(to_string(c.fluid.model));
-  p.treatment = core::parse_treatment(to_string(c.fluid.treatment));
-  p.drag_law = core::parse_drag_law(to_string(c.fluid.drag_law));
+  p.model = c.fluid.model;
+  p.treatment = c.fluid.treatment;
+  p.drag_law = c.fluid.drag_law;
   p.drag_coefficient = c.fluid.drag_coefficient;
   p.ca = core::parse_ca_table(to_string(c.fluid.ca_table));
   return p;

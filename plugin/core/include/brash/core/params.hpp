@@ -2,6 +2,8 @@
 // Defaults are the paper's model (physics.md): Table 1 added mass, implicit treatment, C_D 0.44.
 #pragma once
 #include <Eigen/Core>
+
+#include "brash/fluid_options.hpp"
 #include <string>
 #include <string_view>
 #include <vector>
@@ -10,9 +12,11 @@ namespace brash::core {
 
 using Vec3 = Eigen::Vector3d;
 
-enum class FluidModel { Drag, AddedMass, Both };        // Eq. 1, Eq. 2, Eq. 1 + Eq. 2
-enum class Treatment { Explicit, Implicit };            // lagged acceleration vs mass augmentation
-enum class DragLaw { Constant, SchillerNaumann };       // C_D constant or C_D(Re)
+// The option enums and their spelling are shared with the case file (brash/fluid_options.hpp).
+using brash::DragLaw;
+using brash::FluidModel;
+using brash::to_string;
+using brash::Treatment;
 
 // Added-mass coefficients per axis (x, y, z) for each state of Table 1. "partial.z" is the value at
 // full immersion of the linear law Ca_z = partial.z * h / (2r).
@@ -64,8 +68,5 @@ FluidModel parse_fluid_model(std::string_view s);
 Treatment parse_treatment(std::string_view s);
 DragLaw parse_drag_law(std::string_view s);
 CaTable parse_ca_table(std::string_view s);  // "table1" | "text" | "zero" | "uniform <Ca>" (Ca >= 0)
-std::string to_string(FluidModel m);
-std::string to_string(Treatment t);
-std::string to_string(DragLaw d);
 
 }  // namespace brash::core

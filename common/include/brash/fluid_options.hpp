@@ -1,0 +1,26 @@
+// The fluid model's options, one definition for the core (brash::core), the case file (brash::Case) and every
+// engine adapter, each with its one spelling (case.yaml, `fix icefluid`, the runners' --model / --treatment).
+// Parsing with errors lives with the callers (brash::core::parse_*, the case loader), which know the context.
+#pragma once
+#include <string_view>
+
+namespace brash {
+
+enum class FluidModel { Drag, AddedMass, Both };   // Eq. 1, Eq. 2, Eq. 1 + Eq. 2
+enum class Treatment { Explicit, Implicit };       // lagged acceleration vs mass augmentation
+enum class DragLaw { Constant, SchillerNaumann };  // C_D constant or C_D(Re)
+
+constexpr std::string_view to_string(FluidModel m) {
+  switch (m) {
+    case FluidModel::Drag: return "drag";
+    case FluidModel::AddedMass: return "added_mass";
+    case FluidModel::Both: return "both";
+  }
+  return "?";
+}
+constexpr std::string_view to_string(Treatment t) { return t == Treatment::Explicit ? "explicit" : "implicit"; }
+constexpr std::string_view to_string(DragLaw d) {
+  return d == DragLaw::Constant ? "constant" : "schiller_naumann";
+}
+
+}  // namespace brash
