@@ -99,6 +99,8 @@ TEST(LiggghtsResume, KilledRunResumesToTheSameResult) {
   write_small_case(dir / "case", "[0.2, 0.6]", "0.01", "");
 
   ASSERT_EQ(brash::test::run_runner(dir / "case", dir / "full", dir / "full.log"), 0);
+  // Into a file (not a terminal) the progress is plain lines, never rewritten in place with '\r'.
+  EXPECT_EQ(brash::test::read_text(dir / "full.log").find('\r'), std::string::npos);
 
   // Start in a new session (process group = its pid), kill -9 the whole group after the 2nd restart file.
   const fs::path killed = dir / "killed";

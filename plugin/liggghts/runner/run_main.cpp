@@ -171,6 +171,10 @@ EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, c
   char buf[4096];
   double last_print = -1, t_first = -1;
   bool in_thermo = false;
+  // On a terminal the progress line is rewritten in place every 2 s; into a file (nohup, a study's log) it is a
+  // line of its own every 30 s, so that the log stays readable.
+  const bool tty = ::isatty(::fileno(stderr)) != 0;
+  const double print_every_s = tty ? 2.0 : 30.0;
   while (std::fgets(buf, sizeof buf, pipe)) {
     const std::string line = buf;
     log << line;
@@ -199,15 +203,15 @@ EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, c
                        "(%.2f %% < %.2f %%)\n", t, b.mean, b.ci95, 100 * b.ci95 / std::abs(b.mean), 100 * early->rel_ci);
         }
       }
-      if (elapsed - last_print >= 2.0 && t > t_first) {
+      if (elapsed - last_print >= print_every_s && t > t_first) {
         last_print = elapsed;
         const double eta = elapsed * (duration_s - t) / (t - t_first);
-        std::fprintf(stderr, "\r[brash-liggghts] t = %.2f / %.2f s (%3.0f%%)  elapsed %.0f s  ETA %.0f s   ", t,
-                     duration_s, 100 * t / duration_s, elapsed, eta);
+        std::fprintf(stderr, "%s[brash-liggghts] t = %.2f / %.2f s (%3.0f%%)  elapsed %.0f s  ETA %.0f s%s", tty ? "\r" : "",
+                     t, duration_s, 100 * t / duration_s, elapsed, eta, tty ? "   " : "\n");
       }
     }
   }
-  std::fprintf(stderr, "\n");
+  if (tty) std::fprintf(stderr, "\n");
   const int rc = ::pclose(pipe);
   res.exit_code = WIFEXITED(rc) ? WEXITSTATUS(rc) : 128;
   return res;

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <unistd.h>
 #include <cstdlib>
 #include <fmt/format.h>
 #include <fstream>
@@ -52,19 +53,31 @@ EngineResult run_yade(const fs::path& run_dir, int threads) {
   FILE* pipe = ::popen(cmd.c_str(), "r");
   if (!pipe) throw std::runtime_error("cannot start " + cmd);
   char buf[8192];
+  // Progress: rewritten in place on a terminal; into a file, a line of its own every 30 s at most.
+  const bool tty = ::isatty(::fileno(stderr)) != 0;
+  auto last_print = std::chrono::steady_clock::now() - std::chrono::hours(1);
+  bool line_open = false;  // a progress line without its newline is on the terminal
   while (std::fgets(buf, sizeof buf, pipe)) {
     std::string line = buf;
     log << line << std::flush;
     if (line.rfind("[brash-yade] t = ", 0) == 0) {
       line.erase(line.find_last_not_of("\r\n") + 1);
-      std::fprintf(stderr, "\r%s   ", line.c_str());
+      const auto now = std::chrono::steady_clock::now();
+      if (tty) {
+        std::fprintf(stderr, "\r%s   ", line.c_str());
+        line_open = true;
+      } else if (now - last_print >= std::chrono::seconds(30)) {
+        last_print = now;
+        std::fprintf(stderr, "%s\n", line.c_str());
+      }
     } else if (line.rfind("[brash-yade] ERROR", 0) == 0 && res.error.empty()) {
       res.error = line.substr(20, line.find('\n') - 20);  // after "[brash-yade] ERROR: "
     } else if (line.rfind("[brash-yade]", 0) == 0) {
-      std::fprintf(stderr, "\n%s", line.c_str());
+      std::fprintf(stderr, "%s%s", line_open ? "\n" : "", line.c_str());
+      line_open = false;
     }
   }
-  std::fprintf(stderr, "\n");
+  if (line_open) std::fprintf(stderr, "\n");
   const int rc = ::pclose(pipe);
   res.exit_code = WIFEXITED(rc) ? WEXITSTATUS(rc) : 128;
   return res;
