@@ -51,6 +51,7 @@ struct Run {  // one run directory (several rows may share it)
   std::string exit_text;
   bool ok = false;
   std::string problem;  // why the run is not usable (missing, failed, ...)
+  bool in_progress = false;  // exit_code column "in progress: ..." (a long run resumed in pieces, not failed)
   std::vector<std::string> warnings;
   std::string engine = "?", model = "?", case_name = "?";
   double mean_N = 0, ci_N = 0, full_kN = 0, full_ci_kN = 0, speed = 0, lambda = 0;
@@ -140,6 +141,11 @@ std::optional<T> opt(const json& j, const json::json_pointer& p) {
 
 void load_report(Run& r) {
   if (r.exit_code && *r.exit_code != 0) r.problem = fmt::format("runner exited with code {}", *r.exit_code);
+  if (r.exit_text.rfind("in progress", 0) == 0) {
+    r.in_progress = true;
+    r.problem = r.exit_text;
+    return;
+  }
   if (!r.exit_text.empty()) r.problem = "runner: " + r.exit_text;
   if (r.run_dir.empty()) {
     if (r.problem.empty()) r.problem = "no run directory recorded";
@@ -250,6 +256,7 @@ std::string scale_label(const Run& r) {
 }
 
 std::string status_cell(const Run& r) {
+  if (r.in_progress) return "**IN PROGRESS** (" + r.problem + ")";
   if (!r.ok) return "**FAILED/MISSING: " + r.problem + "**";
   std::string s;
   for (const auto& w : r.warnings) s += (s.empty() ? "" : "; ") + w;
@@ -310,12 +317,24 @@ std::string md_escape(std::string s) {
 
 // ---- sections -------------------------------------------------------------------------------------
 void section_failures(const Study& s, std::string& md) {
-  std::vector<const Run*> bad;
-  for (const auto& k : s.order)
-    if (!s.runs.at(k).ok) bad.push_back(&s.runs.at(k));
+  std::vector<const Run*> bad, running;
+  for (const auto& k : s.order) {
+    const Run& r = s.runs.at(k);
+    if (r.in_progress) running.push_back(&r);
+    else if (!r.ok) bad.push_back(&r);
+  }
+  if (!running.empty()) {
+    md += fmt::format("## Runs in progress\n\n{} run(s) are still running (resumed in pieces); their rows below have no "
+                      "result yet.\n\n| run | run dir | state |\n|---|---|---|\n",
+                      running.size());
+    for (const Run* r : running)
+      md += fmt::format("| {} | `{}` | {} |\n", r->ref, show_path(r->run_dir), md_escape(r->problem));
+    md += "\n";
+  }
   md += "## Runs that failed or are missing\n\n";
   if (bad.empty()) {
-    md += "None: every run listed in the manifest has a complete report.json.\n\n";
+    md += running.empty() ? "None: every run listed in the manifest has a complete report.json.\n\n"
+                          : "None: every other run listed in the manifest has a complete report.json.\n\n";
     return;
   }
   md += fmt::format("**{} of {} run(s) have no usable result.** They are kept in every table below with "
@@ -750,15 +769,19 @@ int main(int argc, char** argv) {
       fs::rename(tmp, out_p);
     }
     summary["runs"] = json::array();
-    std::size_t failed = 0;
+    std::size_t failed = 0, running = 0;
     for (const auto& k : s.order) {
       const Run& r = s.runs.at(k);
-      failed += r.ok ? 0 : 1;
-      summary["runs"].push_back({{"ref", r.ref}, {"run_dir", r.run_dir.string()}, {"ok", r.ok}, {"problem", r.problem}});
+      failed += r.ok || r.in_progress ? 0 : 1;
+      running += r.in_progress ? 1 : 0;
+      summary["runs"].push_back({{"ref", r.ref}, {"run_dir", r.run_dir.string()}, {"ok", r.ok},
+                                 {"in_progress", r.in_progress}, {"problem", r.problem}});
     }
     summary["failed"] = failed;
+    summary["in_progress"] = running;
     if (!summary_path.empty()) std::ofstream(summary_path) << summary.dump(2) << "\n";
-    fmt::print("brash-study-report: {} ({} run(s), {} failed or missing)\n", out_p.string(), s.order.size(), failed);
+    fmt::print("brash-study-report: {} ({} run(s), {} failed or missing, {} in progress)\n", out_p.string(),
+               s.order.size(), failed, running);
     return 0;
   } catch (const std::exception& e) {
     fmt::print(stderr, "brash-study-report: {}\n", e.what());

@@ -113,6 +113,7 @@ TEST(StudyReport, TablesCarryValuesAndFailuresAreReported) {
   m += "d2\tdensity_ice\trho 950\tice.density_kg_m3\t950\t0\tjbc_bench\t0\truns/never_ran\tbrash-liggghts-run never\n";
   m += "c1\tca\tCa text\tfluid.ca_table\ttext\t0\tjbc_bench\t137\t\tbrash-liggghts-run killed\n";
   m += "c2\tca\tCa zero\tfluid.ca_table\tzero\t0\tjbc_bench\tcase generation failed\truns/c2\tbrash-case new c2\n";
+  m += "p3\tpaper\tpaper case am\t\t\t1\tjbc_ia_5kn\tin progress: model time 7.70 s of 40 s reached\truns/paper\tbrash-liggghts-run paper\n";
   std::ofstream(d / "manifest.tsv") << m;
   ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --plot none --summary-json '{}'", (d / "manifest.tsv").string(),
                                     (d / "study.md").string(), (d / "summary.json").string())),
@@ -141,10 +142,15 @@ TEST(StudyReport, TablesCarryValuesAndFailuresAreReported) {
   EXPECT_NE(md.find("no report.json"), std::string::npos);
   EXPECT_NE(md.find("runner exited with code 137"), std::string::npos);
   EXPECT_NE(md.find("runner: case generation failed"), std::string::npos);
-  EXPECT_NE(md.find("**4 of 8 run(s) have no usable result.**"), std::string::npos) << md;
+  EXPECT_NE(md.find("**4 of 9 run(s) have no usable result.**"), std::string::npos) << md;
+  // a long run still going is "in progress", not a failure, and says how far it is
+  EXPECT_NE(md.find("## Runs in progress"), std::string::npos);
+  EXPECT_NE(md.find("| R9 | `"), std::string::npos);
+  EXPECT_NE(md.find("**IN PROGRESS** (in progress: model time 7.70 s of 40 s reached)"), std::string::npos);
   const json s = json::parse(read(d / "summary.json"));
   EXPECT_EQ(s["failed"], 4);
-  EXPECT_EQ(s["runs"].size(), 8u);
+  EXPECT_EQ(s["in_progress"], 1);
+  EXPECT_EQ(s["runs"].size(), 9u);
 }
 
 // Section (a)'s figures: the Fig. 6 analog bar chart (data with our runs, the paper's numbers and our R_CH) and
