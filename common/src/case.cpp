@@ -413,7 +413,7 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
   {  // speedups (docs/performance.md)
     const auto s = r.section(root, "speedups",
                              {"farfield", "farfield_ahead_m", "farfield_behind_m", "farfield_every_steps",
-                              "symmetry_y", "neighbor_skin_d", "early_stop_rel_ci"});
+                              "symmetry_y", "neighbor_skin_d", "early_stop_rel_ci", "early_stop_trend_check"});
     r.boolean(s, "speedups", "farfield", c.speedups.farfield);
     r.num(s, "speedups", "farfield_ahead_m", c.speedups.farfield_ahead_m, non_negative, ">= 0");
     r.num(s, "speedups", "farfield_behind_m", c.speedups.farfield_behind_m, non_negative, ">= 0");
@@ -426,6 +426,7 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
           [](double k) { return k > 0 && k <= 2; }, "in (0, 2]");
     r.num(s, "speedups", "early_stop_rel_ci", c.speedups.early_stop_rel_ci,
           [](double f) { return f >= 0 && f < 1; }, "in [0, 1) (0 = off)");
+    r.boolean(s, "speedups", "early_stop_trend_check", c.speedups.early_stop_trend_check);
     // Ice is disturbed up to a few diameters ahead of the bow; an idle zone that starts closer
     // would stop pieces the bow is already pushing.
     if (c.speedups.farfield && c.speedups.farfield_ahead_m < 2 * c.ice.diameter_mean_m)
@@ -568,6 +569,7 @@ std::string dump_case_yaml(const Case& c) {
   line("  ", "symmetry_y", c.speedups.symmetry_y ? "true" : "false");
   line("  ", "neighbor_skin_d", num(c.speedups.neighbor_skin_d));
   line("  ", "early_stop_rel_ci", num(c.speedups.early_stop_rel_ci));
+  line("  ", "early_stop_trend_check", c.speedups.early_stop_trend_check ? "true" : "false");
   o += "guards:\n";
   line("  ", "max_hull_penetration_d", num(c.guards.max_hull_penetration_d));
   line("  ", "every_steps", fmt::format("{}", c.guards.every_steps));

@@ -9,6 +9,7 @@
 
 #include <brash/error.hpp>
 #include <brash/run_layout.hpp>
+#include <brash/post/early_stop.hpp>
 #include <brash/post/fsicr.hpp>
 #include <brash/post/particles.hpp>
 #include <brash/post/plots.hpp>
@@ -41,6 +42,43 @@ bool step(RunAnalysis& a, std::vector<std::string>& outputs, const char* what, F
     a.notes.push_back(fmt::format("{} failed: {}", what, e.what()));
     return false;
   }
+}
+
+// Replays the early-stop rule on a finished run's record (early_stop.hpp) for each threshold and prints a markdown
+// table: where the run would have stopped, the model time that saves, and the window mean it would have reported
+// against the full window's. Exact for a LIGGGHTS run: an early stop only truncates the same trajectory.
+int run_early_stop(const fs::path& run_dir, const std::vector<double>& thresholds, double check_every_s,
+                   bool trend_check) {
+  const auto a = analyze_run(run_dir);
+  const double t0 = a.window.requested_s[0], t1 = a.window.requested_s[1];
+  if (a.window.truncated || a.window.fallback || a.force.t_s.empty())
+    throw brash::InputError(fmt::format("{}: the hull force record ends at t = {} s, before the window [{}, {}] s ends; "
+                                        "the replay needs a finished run",
+                                        run_dir.string(), a.force.t_s.empty() ? 0.0 : a.force.t_s.back(), t0, t1));
+  const double t_end = a.force.t_s.back();
+  const double every = check_every_s > 0 ? check_every_s : t_end / 200.0;
+  std::vector<double> r(a.force.fx_N.size());
+  for (std::size_t i = 0; i < r.size(); ++i) r[i] = -a.force.fx_N[i];
+  const auto& full = a.resistance;
+  fmt::print("early-stop replay of {}: window [{}, {}] s, record to {} s, a check every {:.4g} s{}\n"
+             "full window: {:.4g} +- {:.3g} N (95 % CI, {:.1f} %{})\n\n",
+             run_dir.string(), t0, t1, t_end, every, trend_check ? "" : ", CI alone (no trend check)", full.mean, full.ci95, 100 * full.ci95 / std::abs(full.mean),
+             full.plateau_found ? "" : ", no blocking plateau: a lower bound");
+  fmt::print("| early_stop_rel_ci | stops at t [s] | model time saved | mean at the stop [N] | vs full window | "
+             "difference / full CI95 |\n|---|---|---|---|---|---|\n");
+  for (const double rel : thresholds) {
+    if (!(rel > 0)) throw brash::InputError(fmt::format("--rel-ci {}: must be > 0", rel));
+    const auto e = replay_early_stop(a.force.t_s, r, t0, t1, rel, every, trend_check);
+    const double d = e.at_stop.mean - full.mean;
+    if (!e.stopped)
+      fmt::print("| {:.3g} | never (CI95 at the window end {:.1f} %) | 0 % | — | — | — |\n", rel,
+                 100 * full.ci95 / std::abs(full.mean));
+    else
+      fmt::print("| {:.3g} | {:.3f} | {:.1f} % ({:.2f}x) | {:.4g} +- {:.3g} | {:+.2f} % | {:+.2f} |\n", rel, e.t_stop_s,
+                 100 * (t_end - e.t_stop_s) / t_end, t_end / e.t_stop_s, e.at_stop.mean, e.at_stop.ci95,
+                 100 * d / full.mean, full.ci95 > 0 ? d / full.ci95 : 0.0);
+  }
+  return 0;
 }
 
 int run_report(const fs::path& run_dir, const ReportOptions& opt) {
@@ -166,6 +204,22 @@ int main(int argc, char** argv) {
   compare->add_option("RUN_DIR", compare_runs, "run directories")->required()->check(CLI::ExistingDirectory);
   compare->add_option("--out", compare_out, "output folder")->capture_default_str();
 
+  auto* early = app.add_subcommand(
+      "early-stop",
+      "replay the early-stop rule (speedups.early_stop_rel_ci) on a finished run: where it would have stopped, the "
+      "model time saved and the window mean it would have reported");
+  fs::path early_run;
+  std::vector<double> early_rel{0.02, 0.05, 0.1, 0.2};
+  double early_every = 0;
+  early->add_option("RUN_DIR", early_run, "finished run directory")->required()->check(CLI::ExistingDirectory);
+  early->add_option("--rel-ci", early_rel, "thresholds: 95 % CI as a fraction of the mean")
+      ->delimiter(',')
+      ->capture_default_str();
+  bool early_no_trend = false;
+  early->add_flag("--no-trend-check", early_no_trend, "the rule on the CI alone (speedups.early_stop_trend_check: false)");
+  early->add_option("--check-every", early_every,
+                    "model time between checks [s] (default: the LIGGGHTS runner's, 1/200 of the record)");
+
 #ifdef BRASH_POST_HAVE_STABILITY
   auto* stability = app.add_subcommand(
       "stability",
@@ -192,6 +246,7 @@ int main(int argc, char** argv) {
   try {
     if (fsicr->parsed()) return run_fsicr(p, ice_class);
     if (compare->parsed()) return run_compare(compare_runs, compare_out);
+    if (early->parsed()) return run_early_stop(early_run, early_rel, early_every, !early_no_trend);
 #ifdef BRASH_POST_HAVE_STABILITY
     if (stability->parsed()) {
       if (above_water > 0) sopt.above_water_m = above_water;

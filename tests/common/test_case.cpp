@@ -150,6 +150,8 @@ TEST(CaseLoader, DumpThenLoadGivesTheSameCase) {
     c.speedups.farfield_every_steps = 37;
     c.speedups.symmetry_y = true;
     c.speedups.neighbor_skin_d = 0.35;
+    c.speedups.early_stop_rel_ci = 0.03;
+    c.speedups.early_stop_trend_check = false;
     c.guards.max_hull_penetration_d = 0.3;
     c.guards.every_steps = 7;
     const fs::path run = temp_dir(std::string("rt_") + name);
@@ -236,6 +238,9 @@ TEST(CaseLoader, SpeedupsDefaultOffAndRead) {
   EXPECT_FALSE(d.speedups.farfield);
   EXPECT_FALSE(d.speedups.symmetry_y);
   EXPECT_DOUBLE_EQ(d.speedups.neighbor_skin_d, 0.2);
+  EXPECT_TRUE(d.speedups.early_stop_trend_check);
+  EXPECT_FALSE(brash::parse_case("name: x\nspeedups:\n  early_stop_trend_check: false\n", kRepo, "mem")
+                   .speedups.early_stop_trend_check);
   const Case c = brash::parse_case(
       "name: x\nspeedups:\n  farfield: true\n  farfield_ahead_m: 0.5\n  farfield_behind_m: 2\n"
       "  farfield_every_steps: 50\n  symmetry_y: yes\n  neighbor_skin_d: 0.3\n",

@@ -61,8 +61,11 @@ void write_small_case(const fs::path& case_dir, const std::string& window, const
 
 TEST(LiggghtsRunner, EarlyStopWhenTheConfidenceIntervalIsSmallEnough) {
   const fs::path dir = brash::test::fresh_dir("earlystop");
-  // A loose threshold (50 % of the mean) so that the short run meets it: checked from 0.1 + 0.4 * 0.5 s on.
-  write_small_case(dir / "case", "[0.1, 0.6]", "0.002", "speedups:\n  early_stop_rel_ci: 0.5\n");
+  // A loose threshold (50 % of the mean) so that the short run meets it: checked from 0.1 + 0.4 * 0.5 s on. The
+  // bow is still entering the ice (a ramp), so the default trend check would (rightly) never stop it: this test
+  // is about the runner stopping the engine, the rule itself is tested in tests/postproc/test_early_stop.cpp.
+  write_small_case(dir / "case", "[0.1, 0.6]", "0.002",
+                   "speedups:\n  early_stop_rel_ci: 0.5\n  early_stop_trend_check: false\n");
   ASSERT_EQ(brash::test::run_runner(dir / "case", dir / "run", dir / "run.log"), 0);
   const std::string meta = brash::test::read_text(dir / "run/meta.json");
   EXPECT_NE(meta.find("\"complete\""), std::string::npos);

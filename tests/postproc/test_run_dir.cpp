@@ -194,3 +194,30 @@ TEST(RunDir, MeasuredHullGivesFsicrParameters) {
   GTEST_SKIP() << "built without brash_hull";
 #endif
 }
+
+// `brash-post early-stop`: the rule replayed on a finished synthetic run (plateau from 10 s, window [15, 40] s,
+// checks every 45 / 200 s): at 5 % it stops soon after 40 % of the window (25 s; the first check, 25.2 s, has
+// no blocking plateau yet), with the mean 1 % (0.55 CI) from the full window's; at 0.1 % never.
+// A run whose record ends before the window end is refused.
+TEST(RunDir, EarlyStopReplayTable) {
+  const auto dir = scratch("early");
+  SyntheticRun r;
+  write_synthetic_run(dir, r);
+  const auto out = dir / "early.txt";
+  const auto cmd = fmt::format("{} early-stop {} --rel-ci 0.05,0.001 > {} 2>&1", BRASH_POST_EXE, dir.string(), out.string());
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  std::ifstream in(out);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("| 0.05 | 25.425 | 43.5 % (1.77x) | 2.031 +- 0.0587 | +1.05 % | +0.55 |"), std::string::npos)
+      << text;
+  EXPECT_NE(text.find("| 0.001 | never"), std::string::npos) << text;
+  SyntheticRun s;
+  s.duration_s = 30.0;
+  write_synthetic_run(dir, s);
+  const auto cmd2 = fmt::format("{} early-stop {} > {} 2>&1", BRASH_POST_EXE, dir.string(), out.string());
+  EXPECT_EQ(WEXITSTATUS(std::system(cmd2.c_str())), 2);
+  std::ifstream in2(out);
+  const std::string text2((std::istreambuf_iterator<char>(in2)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text2.find("the replay needs a finished run"), std::string::npos) << text2;
+  fs::remove_all(dir);
+}

@@ -15,6 +15,7 @@
 
 #include "brash/case.hpp"
 #include "brash/post/blocking.hpp"
+#include "brash/post/early_stop.hpp"
 #include "brash/error.hpp"
 #include "brash/hull/mesh.hpp"
 #include "brash/packing.hpp"
@@ -129,6 +130,7 @@ std::size_t convert_dumps(const fs::path& run_dir, const brash::Case& c) {
 struct EarlyStop {
   double rel_ci = 0;            // stop when ci95 < rel_ci * |mean| (0 = off)
   double t0 = 0, t1 = 0;        // averaging window
+  bool trend_check = true;      // speedups.early_stop_trend_check
   bool stopped = false;
   double t_stop = 0, mean = 0, ci95 = 0;
 };
@@ -191,10 +193,12 @@ EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, c
     if (std::sscanf(line.c_str(), " %ld %lf", &step, &t) == 2) {
       const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       if (t_first < 0) t_first = t;  // a resumed run starts at its restart time
-      if (early && early->rel_ci > 0 && !early->stopped && t >= early->t0 + 0.4 * (early->t1 - early->t0)) {
+      if (early && early->rel_ci > 0 && !early->stopped &&
+          t >= early->t0 + brash::post::kEarlyStopFirstCheckFraction * (early->t1 - early->t0)) {
         const auto r = resistance_since(run_dir / "hull_force.raw", early->t0);
-        const auto b = brash::post::block_average(r);
-        if (r.size() >= 64 && b.plateau_found && b.ci95 < early->rel_ci * std::abs(b.mean)) {
+        const auto v = brash::post::early_stop_verdict(r, t, early->t0, early->t1, early->rel_ci, early->trend_check);
+        const auto& b = v.blocking;
+        if (v.stop) {
           early->stopped = true, early->t_stop = t, early->mean = b.mean, early->ci95 = b.ci95;
           std::ifstream pidf(run_dir / "engine.pid");
           long pid = 0;
@@ -348,7 +352,8 @@ int main(int argc, char** argv) {
 
     const auto t0 = std::chrono::steady_clock::now();
     EngineResult res;
-    EarlyStop early{c.speedups.early_stop_rel_ci, c.run.window_s[0], c.run.window_s[1]};
+    EarlyStop early{c.speedups.early_stop_rel_ci, c.run.window_s[0], c.run.window_s[1],
+                    c.speedups.early_stop_trend_check};
     if (!resume) {
       res = run_engine(run_dir, ranks, run_duration, "in.lmp", &early);
     } else {
