@@ -178,9 +178,10 @@ void World::update_cull() {
   const double lo = h.x() + hull_min_[0] - skips_.cull_behind_m;
   const double hi = h.x() + hull_max_[0] + skips_.cull_ahead_m;
   const double side = hull_half_beam() + skips_.cull_side_m;
-  // Between two updates an active sphere stays within a diameter of the window (it moves < 1 cm in
-  // cull_every steps); 3 diameters keep every frozen sphere it can touch in the broad phase.
-  const double margin = 6.0 * max_radius_m_;
+  // Between two updates an active sphere leaves the window by at most its travel in cull_every steps (taken at
+  // up to 2 m/s, 4x the paper's ship speed); 3 diameters more keep every frozen sphere it can touch in the
+  // broad phase.
+  const double margin = 6.0 * max_radius_m_ + 2.0 * stepper_.dt_s * std::max(1, skips_.cull_every);
   const bool cull_geoms = skips_.cull && skips_.cull_geoms;
   std::size_t geoms_out = 0;
   for (auto& s : spheres_) {
