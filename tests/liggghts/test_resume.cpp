@@ -5,6 +5,7 @@
 // Before the restart point the hull force is identical; after it the DEM trajectory is not bit-exact
 // (LIGGGHTS recomputes contact forces at set-up from full-step velocities, and granular flow is chaotic),
 // so the resumed run must give the same mean resistance within the noise of the signal.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -16,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include "brash/post/early_stop.hpp"
 #include "runner_case.h"
 
 namespace fs = std::filesystem;
@@ -74,9 +76,66 @@ TEST(LiggghtsRunner, EarlyStopWhenTheConfidenceIntervalIsSmallEnough) {
   ASSERT_FALSE(rows.empty());
   EXPECT_GE(rows.back().t, 0.3 - 1e-9);  // not before the check starts
   EXPECT_LT(rows.back().t, 0.55);        // well before the requested end
+  // the runner stopped where the rule, replayed on its record at its check times (0.6 / 200 s), says
+  std::vector<double> t, r;
+  for (const auto& row : rows) t.push_back(row.t), r.push_back(-row.fx);
+  const auto replay = brash::post::replay_early_stop(t, r, 0.1, 0.6, 0.5, 0.6 / 200, false);
+  EXPECT_TRUE(replay.stopped);
+  // the record ends with the last output row (every 0.002 s) at or before the stop
+  EXPECT_LE(rows.back().t, replay.t_stop_s + 1e-9);
+  EXPECT_GT(rows.back().t, replay.t_stop_s - 0.002 - 1e-9);
   // the run's resolved case ends at the stop, so the report's window does too
   const std::string yaml = brash::test::read_text(dir / "run/case.yaml");
   EXPECT_EQ(yaml.find("duration_s: 0.6\n"), std::string::npos) << yaml;
+  fs::remove_all(dir);
+}
+
+// A run killed before its early-stop checks start, then resumed: the resumed process applies the rule too, on the
+// record of both attempts. Whether this (chaotic) trajectory meets the rule is not known in advance, so the test
+// replays the rule on the final record at the runner's check times (every 0.6 / 200 s) and asks the runner to
+// have done exactly that: stopped at the replay's time with the record ending there, or run to the end.
+TEST(LiggghtsRunner, EarlyStopInAResumedRunFollowsTheRule) {
+  const fs::path dir = brash::test::fresh_dir("earlystop_resume");
+  write_small_case(dir / "case", "[0.1, 0.6]", "0.002",
+                   "speedups:\n  early_stop_rel_ci: 0.5\n  early_stop_trend_check: false\n");
+  const fs::path run = dir / "run";
+  const std::string start = "setsid bash -c 'echo $$ > \"" + (dir / "pid").string() + "\"; exec " +
+                            brash::test::runner_command(dir / "case", run) + "' > '" + (dir / "killed.log").string() +
+                            "' 2>&1 &";
+  ASSERT_EQ(std::system(start.c_str()), 0);
+  bool first = false;
+  for (int i = 0; i < 600 && !first; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    first = fs::exists(run / "restart/a.restart") || fs::exists(run / "restart/b.restart");
+  }
+  ASSERT_TRUE(first) << "no restart file";
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  const std::string pid = brash::test::read_text(dir / "pid");
+  ASSERT_EQ(std::system(("kill -9 -" + pid.substr(0, pid.find('\n')) + " 2>/dev/null; sleep 0.5").c_str()), 0);
+  ASSERT_EQ(brash::test::read_text(run / "meta.json").find("\"early_stop\""), std::string::npos)
+      << "stopped before the kill: the test needs a kill before the checks start";
+  ASSERT_EQ(std::system((std::string("'") + BRASH_BIN_DIR + "/brash-liggghts-run' --resume '" + run.string() +
+                         "' --no-post > '" + (dir / "resume.log").string() + "' 2>&1")
+                            .c_str()),
+            0)
+      << brash::test::read_text(dir / "resume.log");
+  const std::string meta = brash::test::read_text(run / "meta.json");
+  EXPECT_NE(meta.find("\"complete\""), std::string::npos) << meta;
+  const auto rows = read_force(run / "hull_force.csv");
+  ASSERT_GT(rows.size(), 100u);
+  std::vector<double> t, r;
+  for (const auto& row : rows) t.push_back(row.t), r.push_back(-row.fx);
+  const auto replay = brash::post::replay_early_stop(t, r, 0.1, 0.6, 0.5, 0.6 / 200, false);
+  const bool stopped = meta.find("\"early_stop\"") != std::string::npos;
+  std::printf("[early stop, resumed run] runner: %s; replay: %s at %.3f s\n", stopped ? "stopped" : "ran to the end",
+              replay.stopped ? "stops" : "never stops", replay.t_stop_s);
+  EXPECT_EQ(stopped, replay.stopped);
+  if (replay.stopped) {  // the record ends with the last output row (every 0.002 s) at or before the stop
+    EXPECT_LE(rows.back().t, replay.t_stop_s + 1e-9);
+    EXPECT_GT(rows.back().t, replay.t_stop_s - 0.002 - 1e-9);
+  } else {
+    EXPECT_NEAR(rows.back().t, 0.6, 1e-9);
+  }
   fs::remove_all(dir);
 }
 
@@ -123,6 +182,10 @@ TEST(LiggghtsResume, KilledRunResumesToTheSameResult) {
             0);
   EXPECT_FALSE(fs::exists(killed / "restart/final.restart")) << "killed too late: the run had finished";
   EXPECT_NE(brash::test::read_text(killed / "meta.json").find("\"running\""), std::string::npos);
+  // the record so far was written with the restart files (brash-post can look at a run while it goes)
+  const auto so_far = read_force(killed / "hull_force.csv");
+  ASSERT_FALSE(so_far.empty());
+  EXPECT_GE(so_far.back().t, 0.06 - 1e-9);  // at least up to the first restart time (a tenth of 0.6 s)
 
   ASSERT_EQ(std::system((std::string("'") + BRASH_BIN_DIR + "/brash-liggghts-run' --resume '" +
                          killed.string() + "' --no-post > '" + (dir / "resume.log").string() + "' 2>&1")

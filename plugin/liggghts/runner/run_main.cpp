@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <csignal>
@@ -28,10 +29,14 @@ using brash::InputError;
 
 namespace {
 
-// hull_force*.raw (fix ave/time: "step t fx fy fz") -> hull_force.csv "t_s,fx_N,fy_N,fz_N". The raw
-// files of a resumed run are read in order; a later file's row for a step replaces an earlier one.
-std::size_t convert_hull_force(const std::vector<fs::path>& raws, const fs::path& csv) {
-  std::map<long, std::string> rows;
+struct ForceRow {
+  double t, fx, fy, fz;
+};
+
+// Rows of hull_force*.raw (fix ave/time: "step t fx fy fz") by step. The raw files of a resumed run are read in
+// order; a later file's row for a step replaces an earlier one.
+std::map<long, ForceRow> read_hull_force_raws(const std::vector<fs::path>& raws) {
+  std::map<long, ForceRow> rows;
   for (const auto& raw : raws) {
     std::ifstream in(raw);
     std::string line;
@@ -45,13 +50,22 @@ std::size_t convert_hull_force(const std::vector<fs::path>& raws, const fs::path
       if (first_step < 0) first_step = step;
       // A resumed run's first row is its set-up (no contact force summed yet): keep the earlier value.
       if (step == first_step && rows.count(step)) continue;
-      rows[step] = fmt::format("{:.9g},{:.9g},{:.9g},{:.9g}\n", t, fx, fy, fz);
+      rows[step] = {t, fx, fy, fz};
     }
   }
+  return rows;
+}
+
+// -> hull_force.csv "t_s,fx_N,fy_N,fz_N" (atomic), rows up to t_max_s; the number of rows. While a resumed run
+// goes, an earlier attempt's rows beyond the current time are not (yet) this run's: t_max_s leaves them out.
+std::size_t convert_hull_force(const std::vector<fs::path>& raws, const fs::path& csv,
+                               double t_max_s = std::numeric_limits<double>::infinity()) {
   std::string out = "t_s,fx_N,fy_N,fz_N\n";
-  for (const auto& [step, row] : rows) out += row;
+  std::size_t n = 0;
+  for (const auto& [step, r] : read_hull_force_raws(raws))
+    if (r.t <= t_max_s) out += fmt::format("{:.9g},{:.9g},{:.9g},{:.9g}\n", r.t, r.fx, r.fy, r.fz), ++n;
   brash::run::write_atomic(csv, out);
-  return rows.size();
+  return n;
 }
 
 // Raw hull-force files of earlier (killed) attempts, oldest first, then the current one.
@@ -135,18 +149,12 @@ struct EarlyStop {
   double t_stop = 0, mean = 0, ci95 = 0;
 };
 
-// Resistance samples (-fx) with t >= t0 from the (growing) raw hull-force file.
-std::vector<double> resistance_since(const fs::path& raw, double t0) {
+// Resistance samples (-fx) with t0 <= t <= t_now from the (growing) raw hull-force files, those of earlier
+// attempts of a resumed run included.
+std::vector<double> resistance_since(const std::vector<fs::path>& raws, double t0, double t_now) {
   std::vector<double> r;
-  std::ifstream in(raw);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream ss(line);
-    long step;
-    double t, fx, fy, fz;
-    if ((ss >> step >> t >> fx >> fy >> fz) && t >= t0) r.push_back(-fx);
-  }
+  for (const auto& [step, row] : read_hull_force_raws(raws))
+    if (row.t >= t0 && row.t <= t_now) r.push_back(-row.fx);
   return r;
 }
 
@@ -159,8 +167,10 @@ struct EngineResult {
 };
 
 // Runs the engine, copies its screen output to log.txt and prints progress with an ETA.
-EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, const std::string& input = "in.lmp",
-                        EarlyStop* early = nullptr) {
+// hull_force.csv is refreshed with the record so far every 30 s of wall time and at every restart time
+// (csv_every_model_s), so that brash-post can look at a long run while it goes.
+EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, const std::string& input,
+                        EarlyStop* early, double csv_every_model_s) {
   // exec: the shell's pid becomes the engine's (mpirun's), so an early stop can signal it
   std::string cmd = "cd " + brash::run::shell_quote(run_dir) + " && echo $$ > engine.pid && exec ";
   if (ranks > 1) cmd += fmt::format("mpirun --allow-run-as-root --oversubscribe -np {} ", ranks);
@@ -171,7 +181,8 @@ EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, c
   if (!pipe) throw std::runtime_error("cannot start " + cmd);
   const auto start = std::chrono::steady_clock::now();
   char buf[4096];
-  double last_print = -1, t_first = -1;
+  double last_print = -1, t_first = -1, last_csv = 0;
+  double next_csv_t = csv_every_model_s > 0 ? csv_every_model_s : std::numeric_limits<double>::infinity();
   bool in_thermo = false;
   // On a terminal the progress line is rewritten in place every 2 s; into a file (nohup, a study's log) it is a
   // line of its own every 30 s, so that the log stays readable.
@@ -195,7 +206,7 @@ EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, c
       if (t_first < 0) t_first = t;  // a resumed run starts at its restart time
       if (early && early->rel_ci > 0 && !early->stopped &&
           t >= early->t0 + brash::post::kEarlyStopFirstCheckFraction * (early->t1 - early->t0)) {
-        const auto r = resistance_since(run_dir / "hull_force.raw", early->t0);
+        const auto r = resistance_since(hull_force_raws(run_dir), early->t0, t);
         const auto v = brash::post::early_stop_verdict(r, t, early->t0, early->t1, early->rel_ci, early->trend_check);
         const auto& b = v.blocking;
         if (v.stop) {
@@ -206,6 +217,12 @@ EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, c
           std::fprintf(stderr, "\n[brash-liggghts] early stop at t = %.3f s: window mean %.4g N, 95 %% CI +-%.3g N "
                        "(%.2f %% < %.2f %%)\n", t, b.mean, b.ci95, 100 * b.ci95 / std::abs(b.mean), 100 * early->rel_ci);
         }
+      }
+      if (elapsed - last_csv >= 30.0 || t >= next_csv_t - 1e-9) {
+        // the record so far (meta.json says running; the final conversion at the end replaces it)
+        last_csv = elapsed;
+        while (next_csv_t <= t + 1e-9) next_csv_t += csv_every_model_s;
+        convert_hull_force(hull_force_raws(run_dir), run_dir / "hull_force.csv", t);
       }
       if (elapsed - last_print >= print_every_s && t > t_first) {
         last_print = elapsed;
@@ -328,6 +345,7 @@ int main(int argc, char** argv) {
     opt.hull_x_max_m = xmax;
     opt.restart_every_steps = std::max(
         1L, std::lround((restart_every_s > 0 ? restart_every_s : run_duration / 10) / c.run.timestep_s));
+    const double restart_every_model_s = static_cast<double>(opt.restart_every_steps) * c.run.timestep_s;
     if (!resume) brash::run::write_atomic(run_dir / "in.lmp", brash::liggghts::input_script(c, box, opt));
 
     if (prepare_only) {
@@ -355,7 +373,7 @@ int main(int argc, char** argv) {
     EarlyStop early{c.speedups.early_stop_rel_ci, c.run.window_s[0], c.run.window_s[1],
                     c.speedups.early_stop_trend_check};
     if (!resume) {
-      res = run_engine(run_dir, ranks, run_duration, "in.lmp", &early);
+      res = run_engine(run_dir, ranks, run_duration, "in.lmp", &early, restart_every_model_s);
     } else {
       // Keep what the killed attempt wrote; the resumed run re-emits rows from its restart step on.
       if (fs::exists(run_dir / "hull_force.raw"))
@@ -365,14 +383,19 @@ int main(int argc, char** argv) {
         brash::run::write_atomic(run_dir / "in_resume.lmp", brash::liggghts::input_script(c, box, opt));
         std::cerr << "[brash-liggghts] resuming " << run_dir.string() << " from " << restart << "\n";
         meta["resumed_from"] = restart;
-        res = run_engine(run_dir, ranks, run_duration, "in_resume.lmp");
-        if (res.exit_code == 0 && res.error.empty()) break;
+        res = run_engine(run_dir, ranks, run_duration, "in_resume.lmp", &early, restart_every_model_s);
+        if (early.stopped || (res.exit_code == 0 && res.error.empty())) break;
         std::cerr << "[brash-liggghts] resume from " << restart << " failed: " << res.error << "\n";
       }
     }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const auto raws = hull_force_raws(run_dir);
-    const auto rows = raws.empty() ? 0 : convert_hull_force(raws, run_dir / "hull_force.csv");
+    // after an early stop the record ends at the stop (rows the engine wrote before the signal landed, and a
+    // killed earlier attempt's rows beyond it, are not part of the run)
+    const auto rows = raws.empty() ? 0
+                                   : convert_hull_force(raws, run_dir / "hull_force.csv",
+                                                        early.stopped ? early.t_stop
+                                                                      : std::numeric_limits<double>::infinity());
     convert_dumps(run_dir, c);
     meta["wall_time_s"] = wall;
     meta["loop_time_s"] = res.loop_time_s;
