@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# The paper-case runs so far, side by side: mean resistance (-fx of the hull force, model scale) in bins of
+# model time, for every runs/paper-<engine>-<model> directory (finished or still running). A LIGGGHTS run is
+# read from its raw force files (every attempt of a run resumed in pieces; a later attempt's row replaces an
+# earlier one), an ODE run from hull_force.csv.
+#   bash bench/paper_progress.sh [BIN_S (0.5)] [RUNS_DIR (runs)]
+set -euo pipefail
+here="$(cd "$(dirname "$0")/.." && pwd)"
+bin_s="${1:-0.5}"
+runs="${2:-$here/runs}"
+tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
+cols=()
+for d in "$runs"/paper-*/; do
+  d="${d%/}"; name="$(basename "$d")"
+  if ls "$d"/hull_force*.raw > /dev/null 2>&1; then
+    # parts in attempt order, then the current one; rows keyed by step
+    files=$(ls "$d"/hull_force.part*.raw 2>/dev/null | sort -V; [ -f "$d/hull_force.raw" ] && echo "$d/hull_force.raw")
+    # (a resumed attempt's first row is its set-up, without contact forces: the earlier value is kept, as the runner does)
+    awk 'FNR == 1 { first = -1 } !/^#/ && NF >= 5 { if (first < 0) { first = $1; if ($1 in t) next }
+         t[$1] = $2; fx[$1] = $3 } END { for (s in t) print t[s], fx[s] }' $files
+  elif [ -f "$d/hull_force.csv" ]; then
+    awk -F, 'NR > 1 && NF >= 4 { print $1, $2 }' "$d/hull_force.csv"
+  else
+    continue
+  fi | awk -v b="$bin_s" '{ k = int($1 / b + 1e-9); s[k] += -$2; n[k]++ }
+         END { for (k in s) printf "%d %.3f %d\n", k, s[k] / n[k], n[k] }' | sort -n > "$tmp/$name"
+  cols+=("$name")
+done
+[ ${#cols[@]} -gt 0 ] || { echo "no runs/paper-* directory with a force record" >&2; exit 1; }
+printf '| t [s] |'; for c in "${cols[@]}"; do printf ' %s R [N] |' "$c"; done; echo
+printf '|---|'; for c in "${cols[@]}"; do printf -- '---|'; done; echo
+# full bins only (a bin still being filled is marked with its sample count)
+all_keys=$(cat "$tmp"/* | awk '{ print $1 }' | sort -n -u)
+full=$(awk -v b="$bin_s" 'BEGIN { printf "%d", b / 0.01 + 0.5 }')
+for k in $all_keys; do
+  printf '| %s-%s |' "$(awk -v k="$k" -v b="$bin_s" 'BEGIN { print k * b }')" "$(awk -v k="$k" -v b="$bin_s" 'BEGIN { print (k + 1) * b }')"
+  for c in "${cols[@]}"; do
+    v=$(awk -v k="$k" -v f="$full" '$1 == k { printf "%s%s", $2, ($3 < f - 1 ? " (" $3 " rows)" : "") }' "$tmp/$c")
+    printf ' %s |' "${v:-—}"
+  done
+  echo
+done
