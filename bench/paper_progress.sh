@@ -10,18 +10,19 @@ bin_s="${1:-0.5}"
 runs="${2:-$here/runs}"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
 cols=()
+shopt -s nullglob
 for d in "$runs"/paper-*/; do
   d="${d%/}"; name="$(basename "$d")"
-  if ls "$d"/hull_force*.raw > /dev/null 2>&1; then
+  raws=("$d"/hull_force*.raw)
+  [ ${#raws[@]} -gt 0 ] || [ -f "$d/hull_force.csv" ] || continue
+  if [ ${#raws[@]} -gt 0 ]; then
     # parts in attempt order, then the current one; rows keyed by step
     files=$(ls "$d"/hull_force.part*.raw 2>/dev/null | sort -V; [ -f "$d/hull_force.raw" ] && echo "$d/hull_force.raw")
     # (a resumed attempt's first row is its set-up, without contact forces: the earlier value is kept, as the runner does)
     awk 'FNR == 1 { first = -1 } !/^#/ && NF >= 5 { if (first < 0) { first = $1; if ($1 in t) next }
          t[$1] = $2; fx[$1] = $3 } END { for (s in t) print t[s], fx[s] }' $files
-  elif [ -f "$d/hull_force.csv" ]; then
-    awk -F, 'NR > 1 && NF >= 4 { print $1, $2 }' "$d/hull_force.csv"
   else
-    continue
+    awk -F, 'NR > 1 && NF >= 4 { print $1, $2 }' "$d/hull_force.csv"
   fi | awk -v b="$bin_s" '{ k = int($1 / b + 1e-9); s[k] += -$2; n[k]++ }
          END { for (k in s) printf "%d %.3f %d\n", k, s[k] / n[k], n[k] }' | sort -n > "$tmp/$name"
   cols+=("$name")
