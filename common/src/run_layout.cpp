@@ -5,6 +5,8 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <fmt/chrono.h>
@@ -55,6 +57,23 @@ std::string git_commit() {
   }
   while (!out.empty() && (out.back() == '\n' || out.back() == ' ')) out.pop_back();
   return out.empty() ? "unknown" : out;
+}
+
+RunDirLock::RunDirLock(const std::filesystem::path& run_dir) {
+  const auto file = run_dir / ".lock";
+  fd_ = ::open(file.c_str(), O_RDWR | O_CREAT, 0644);  // no O_CLOEXEC: the engine child keeps the lock too
+  if (fd_ < 0) throw InputError(fmt::format("{}: cannot open the run lock", file.string()));
+  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    ::close(fd_);
+    fd_ = -1;
+    throw InputError(fmt::format("{}: another process is running in this run directory (it holds {}); wait for "
+                                 "it or stop it before resuming",
+                                 run_dir.string(), file.filename().string()));
+  }
+}
+
+RunDirLock::~RunDirLock() {
+  if (fd_ >= 0) ::close(fd_);
 }
 
 }  // namespace brash::run

@@ -176,6 +176,15 @@ TEST(LiggghtsResume, KilledRunResumesToTheSameResult) {
     both = fs::exists(killed / "restart/a.restart") && fs::exists(killed / "restart/b.restart");
   }
   ASSERT_TRUE(both) << "no second restart file";
+  // while it runs, a resume of the same directory is refused (it would write the same files)
+  const fs::path busy = dir / "busy.log";
+  const int busy_rc = std::system((std::string("'") + BRASH_BIN_DIR + "/brash-liggghts-run' --resume '" +
+                                   killed.string() + "' --no-post > '" + busy.string() + "' 2>&1")
+                                      .c_str());
+  EXPECT_NE(WEXITSTATUS(busy_rc), 0);
+  EXPECT_NE(brash::test::read_text(busy).find("another process is running in this run directory"), std::string::npos)
+      << brash::test::read_text(busy);
+  EXPECT_NE(brash::test::read_text(killed / "meta.json").find("\"running\""), std::string::npos);  // left alone
   std::this_thread::sleep_for(std::chrono::milliseconds(500));
   const std::string pid = brash::test::read_text(dir / "pid");
   ASSERT_EQ(std::system(("kill -9 -" + pid.substr(0, pid.find('\n')) + " 2>/dev/null; sleep 0.5").c_str()),

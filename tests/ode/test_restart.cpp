@@ -129,6 +129,24 @@ TEST_F(Restart, RealKill9ThenResume) {
   expect_same_as_a(c, "kill -9 at the first restart file, resume");
 }
 
+// A second brash-ode in the directory of a run still going (a --resume) is refused: it would write the same files.
+TEST_F(Restart, ResumeOfARunStillGoingIsRefused) {
+  const fs::path g = kRoot / "busy";
+  const std::string cmd = std::string("'") + BRASH_ODE_EXE + "' '" + BRASH_SMOKE_CASE + "' --out '" + g.string() +
+                          "' --duration 5 --restart-every 0.04 --no-progress > /dev/null 2>&1 & echo $! > '" +
+                          (kRoot / "busy.pid").string() + "'; i=0; while [ $i -lt 2000 ] && ! ls '" +
+                          (g / "restart").string() + "'/restart_*.bin > /dev/null 2>&1; do sleep 0.01; i=$((i+1)); done";
+  run(cmd);
+  const fs::path err = kRoot / "busy.err";
+  const int rc = run(std::string("'") + BRASH_ODE_EXE + "' --resume '" + g.string() + "' --no-progress 2> '" +
+                     err.string() + "'");
+  const std::string meta = slurp(g / "meta.json");
+  run("kill -9 $(cat '" + (kRoot / "busy.pid").string() + "') 2>/dev/null; sleep 0.3");
+  EXPECT_EQ(rc, 2);
+  EXPECT_NE(meta.find("\"status\": \"running\""), std::string::npos) << meta;  // the refusal left the run alone
+  EXPECT_NE(slurp(err).find("another process is running in this run directory"), std::string::npos) << slurp(err);
+}
+
 TEST_F(Restart, TruncatedNewestRestartFallsBackToThePreviousOne) {
   const fs::path d = kRoot / "D";
   ASSERT_EQ(run(base_cmd(d) + " --crash-after-step 230"), 137);

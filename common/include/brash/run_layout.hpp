@@ -29,4 +29,20 @@ void write_meta(const std::filesystem::path& run_dir, const nlohmann::json& meta
 // Commit of the source tree the binary was built from ("unknown" outside a git checkout).
 std::string git_commit();
 
+// Exclusive lock on a run directory while a runner works in it (flock on RUN_DIR/.lock), so that a second
+// runner (a --resume of a run still going, a study resuming it) cannot write the same files. The kernel releases
+// it when every process holding it ends, kill -9 included; the descriptor is inherited by the engine a runner
+// starts, so an engine left running by a killed runner still holds it. Throws brash::InputError naming the
+// directory when another process holds it.
+class RunDirLock {
+ public:
+  explicit RunDirLock(const std::filesystem::path& run_dir);
+  ~RunDirLock();
+  RunDirLock(const RunDirLock&) = delete;
+  RunDirLock& operator=(const RunDirLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
 }  // namespace brash::run

@@ -10,6 +10,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <csignal>
 #include <unistd.h>
@@ -276,6 +277,7 @@ int main(int argc, char** argv) {
   }
 
   fs::path run_dir;
+  std::optional<brash::run::RunDirLock> run_lock;  // held for the whole run (and by the engine it starts)
   nlohmann::json meta;
   try {
     const fs::path case_file = resume                        ? resume_dir / "case.yaml"
@@ -309,6 +311,9 @@ int main(int argc, char** argv) {
     const auto box = brash::liggghts::scene_box(c, xmin, xmax, zmin, zmax, run_duration);
     std::vector<std::string> restarts;
     if (resume) {
+      // a run still going (another runner, or its orphaned engine) is refused before run_dir is set, so that the
+      // refusal does not touch its meta.json
+      run_lock.emplace(resume_dir);
       run_dir = resume_dir;
       const auto old_meta = nlohmann::json::parse(std::ifstream(run_dir / "meta.json"), nullptr, false);
       if (!old_meta.is_discarded() && old_meta.value("status", "") == "complete")
@@ -317,11 +322,13 @@ int main(int argc, char** argv) {
       if (restarts.empty())
         throw InputError(run_dir.string() + ": no restart file (restart/a.restart, restart/b.restart) to resume from");
     } else {
-      run_dir = out_dir.empty() ? brash::run::make_run_dir(runs_root, c.name, "liggghts",
-                                                           std::string(to_string(c.fluid.model)))
-                                : out_dir;
-      fs::create_directories(run_dir / "particles");
-      fs::create_directories(run_dir / "restart");
+      const fs::path dir = out_dir.empty() ? brash::run::make_run_dir(runs_root, c.name, "liggghts",
+                                                                      std::string(to_string(c.fluid.model)))
+                                           : out_dir;
+      fs::create_directories(dir / "particles");
+      fs::create_directories(dir / "restart");
+      run_lock.emplace(dir);  // --out into a run still going is refused (before run_dir is set, as above)
+      run_dir = dir;
       brash::run::write_atomic(run_dir / "case.yaml", brash::dump_case_yaml(c));
       brash::hull::write_stl(run_dir / "hull.stl", mesh);
       brash::run::write_atomic(run_dir / "packing.data",

@@ -265,6 +265,7 @@ RunResult run_case(const RunOptions& cli_options) {
       o.out_dir.empty() ? run::make_run_dir(o.runs_root, c.name, "ode", std::string(to_string(c.fluid.model))) : o.out_dir;
   fs::create_directories(run_dir / "particles");
   fs::create_directories(run_dir / "restart");
+  const run::RunDirLock run_lock(run_dir);  // a second brash-ode in the same run directory is refused
   if (!o.resume) run::write_atomic(run_dir / "case.yaml", dump_case_yaml(c));
   std::string log = o.resume ? read_text(run_dir / "log.txt") : std::string();
   auto logln = [&](const std::string& s) {
