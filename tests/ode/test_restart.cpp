@@ -8,6 +8,7 @@
 //   - run D stopped after step 230 with its newest restart file truncated -> resume falls back to restart 80;
 //   - all restart files broken -> exit 1 naming the files.
 // The run binary is BRASH_ODE_EXE; the case folder BRASH_SMOKE_CASE; the hull comes from $BRASH_HULL_DIR.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -18,6 +19,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "brash/post/early_stop.hpp"
 
 namespace fs = std::filesystem;
 
@@ -184,6 +187,41 @@ TEST_F(Restart, CullGeomsGiveTheSameRunAndResume) {
   EXPECT_LE(max_diff(f / "hull_force.csv", h / "hull_force.csv", 1, 4), 1e-6);
   EXPECT_LE(max_diff(f / "particles" / "particles_400.csv", h / "particles" / "particles_400.csv", 1, 4), 1e-9);
   EXPECT_LE(max_diff(f / "particles" / "particles_400.csv", h / "particles" / "particles_400.csv", 5, 8), 1e-6);
+}
+
+// speedups.early_stop_rel_ci in brash-ode: the smoke case with a row every 0.001 s (window [0.1, 0.2] s), run to the
+// end, then with early_stop_rel_ci 0.5: it stops exactly where the rule replayed on the full run's record says
+// (ODE runs are deterministic, so the stopped run is the full run's prefix), its record and case end there.
+TEST_F(Restart, EarlyStopEndsWhereTheRuleSays) {
+  const fs::path cdir = kRoot / "es_case";
+  fs::create_directories(cdir);
+  for (const auto& e : fs::directory_iterator(BRASH_SMOKE_CASE)) fs::copy(e.path(), cdir / e.path().filename());
+  std::string yaml = slurp(cdir / "case.yaml");
+  const auto p = yaml.find("  output_interval_s:");
+  ASSERT_NE(p, std::string::npos);
+  yaml.replace(p, yaml.find('\n', p) - p, "  output_interval_s: 0.001");
+  std::ofstream(cdir / "case.yaml") << yaml;
+  const std::string exe = std::string("'") + BRASH_ODE_EXE + "' '" + cdir.string() + "' --no-progress --out '";
+  ASSERT_EQ(run(exe + (kRoot / "es_full").string() + "' > /dev/null 2>&1"), 0);
+  const auto full = read_csv(kRoot / "es_full" / "hull_force.csv");
+  std::vector<double> t, r;
+  for (const auto& row : full) t.push_back(row[0]), r.push_back(-row[1]);
+  const auto replay = brash::post::replay_early_stop(t, r, 0.1, 0.2, 0.5, 0.2 / 200, true);
+  ASSERT_TRUE(replay.stopped) << "the smoke record no longer meets the rule at 50 %: pick another threshold";
+  std::ofstream(cdir / "case.yaml", std::ios::app) << "speedups:\n  early_stop_rel_ci: 0.5\n";
+  ASSERT_EQ(run(exe + (kRoot / "es_run").string() + "' > /dev/null 2>&1"), 0);
+  const std::string meta = slurp(kRoot / "es_run" / "meta.json");
+  EXPECT_NE(meta.find("\"status\": \"complete\""), std::string::npos) << meta;
+  EXPECT_NE(meta.find("\"early_stop\""), std::string::npos) << meta;
+  const auto stopped = read_csv(kRoot / "es_run" / "hull_force.csv");
+  ASSERT_FALSE(stopped.empty());
+  std::printf("[early stop] replay: stop at %.4f s; the run's record ends at %.4f s\n", replay.t_stop_s,
+              stopped.back()[0]);
+  EXPECT_NEAR(stopped.back()[0], replay.t_stop_s, 1e-9);
+  ASSERT_LE(stopped.size(), full.size());
+  for (std::size_t i = 0; i < stopped.size(); ++i) EXPECT_EQ(stopped[i], full[i]) << "row " << i;
+  EXPECT_NE(slurp(kRoot / "es_run" / "case.yaml").find(fmt::format("duration_s: {}", stopped.back()[0])),
+            std::string::npos);
 }
 
 TEST_F(Restart, NoUsableRestartFileIsAClearError) {

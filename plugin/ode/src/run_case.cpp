@@ -21,6 +21,7 @@
 #include "brash/hull/proximity.hpp"
 #include "brash/ode/restart.hpp"
 #include "brash/packing.hpp"
+#include "brash/post/early_stop.hpp"
 #include "brash/run_layout.hpp"
 #include "brash/runner_setup.hpp"
 
@@ -434,6 +435,25 @@ RunResult run_case(const RunOptions& cli_options) {
     const long n_dump = std::max(1L, std::lround(c.run.dump_interval_s / st.dt_s));
     const long n_restart = o.restart_every_s > 0 ? std::max(1L, std::lround(o.restart_every_s / st.dt_s)) : 0;
     const bool tty = isatty(2);
+    // Early stop (speedups.early_stop_rel_ci; the rule of brash/post/early_stop.hpp, checked as often as the
+    // LIGGGHTS runner does: every 1/200 of the run) on the hull force rows written so far.
+    const double es_rel = c.speedups.early_stop_rel_ci, es_t0 = c.run.window_s[0], es_t1 = c.run.window_s[1];
+    const long n_check = std::max(1L, steps / 200);
+    auto resistance_rows = [&](double t_now) {
+      std::vector<double> r;
+      std::istringstream in(csv);
+      std::string line;
+      std::getline(in, line);  // header
+      while (std::getline(in, line)) {
+        const auto c1 = line.find(','), c2 = line.find(',', c1 + 1);
+        const double tr = std::stod(line.substr(0, c1));
+        if (tr >= es_t0 - 1e-12 && tr <= t_now + 1e-12) r.push_back(-std::stod(line.substr(c1 + 1, c2 - c1 - 1)));
+      }
+      return r;
+    };
+    bool es_stopped = false;
+    brash::post::BlockingResult es_at;
+    long k_end = steps;
     auto dump = [&](long step) {
       std::string s = "id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z\n";
       for (std::size_t i = 0; i < w.size(); ++i) {
@@ -500,6 +520,19 @@ RunResult run_case(const RunOptions& cli_options) {
         csv += fmt::format("{:.6f},{:.9g},{:.9g},{:.9g}\n", t, m.x(), m.y(), m.z());
         acc.setZero();
       }
+      if (es_rel > 0 && k % n_check == 0 && k < steps &&
+          t >= es_t0 + brash::post::kEarlyStopFirstCheckFraction * (es_t1 - es_t0)) {
+        const auto v = brash::post::early_stop_verdict(resistance_rows(t), t, es_t0, es_t1, es_rel,
+                                                       c.speedups.early_stop_trend_check);
+        if (v.stop) {
+          es_stopped = true, es_at = v.blocking, k_end = k;
+          logln(fmt::format("early stop at t = {:.4f} s: window mean {:.4g} N, 95 % CI +-{:.3g} N ({:.2f} % < {:.2f} %)",
+                            t, v.blocking.mean, v.blocking.ci95, 100 * v.blocking.ci95 / std::abs(v.blocking.mean),
+                            100 * es_rel));
+          dump(k);
+          break;
+        }
+      }
       const auto now = clock::now();
       if (k % n_dump == 0 || k == steps) {
         dump(k);
@@ -527,8 +560,9 @@ RunResult run_case(const RunOptions& cli_options) {
     const auto now = clock::now();
     res.loop_time_s = std::chrono::duration<double>(now - loop0).count();
     res.wall_time_s = wall_before + std::chrono::duration<double>(now - t_start).count();
-    res.steps = steps;
-    res.simulated_s = duration;
+    const double t_end = double(k_end) * st.dt_s;
+    res.steps = k_end;
+    res.simulated_s = t_end;
     res.stats = w.stats();
     res.particle_steps = w.stats().particle_steps - ps_settle;
     res.mean_fx_window_N = win_n ? win_sum / double(win_n) : NAN;
@@ -537,7 +571,17 @@ RunResult run_case(const RunOptions& cli_options) {
     // Rates from this process's loop only (a resumed run: the steps since the restart point).
     const double ps_this = double(w.stats().particle_steps - ps_loop0);
     meta["particle_steps_per_s"] = ps_this / res.loop_time_s;
-    meta["wall_s_per_simulated_s"] = res.loop_time_s / (duration - double(k0) * st.dt_s);
+    meta["wall_s_per_simulated_s"] = res.loop_time_s / (t_end - double(k0) * st.dt_s);
+    if (es_stopped) {
+      // The run ends at the stop: the resolved case says so (its window ends there), meta records why.
+      brash::Case stopped = c;
+      stopped.run.duration_s = t_end;
+      stopped.run.window_s[1] = std::min(stopped.run.window_s[1], t_end);
+      run::write_atomic(run_dir / "case.yaml", dump_case_yaml(stopped));
+      meta["early_stop"] = {{"t_s", t_end},          {"requested_duration_s", duration},
+                            {"rel_ci_threshold", es_rel}, {"mean_N", es_at.mean},
+                            {"ci95_N", es_at.ci95}};
+    }
     meta["phase_wall_s"] = {{"fluid", res.stats.wall_fluid_s - stats0.wall_fluid_s},
                             {"collide", res.stats.wall_collide_s - stats0.wall_collide_s},
                             {"quickstep", res.stats.wall_step_s - stats0.wall_step_s}};
@@ -545,10 +589,10 @@ RunResult run_case(const RunOptions& cli_options) {
     meta["cull_geoms_out_max"] = res.stats.geoms_out_max;
     logln(fmt::format("done: {} steps in {:.1f} s ({:.3g} particle-steps/s, {:.1f} s wall per simulated s); "
                       "mean Fx over [{}, {}] s = {:.4f} N",
-                      steps - k0, res.loop_time_s, ps_this / res.loop_time_s,
-                      res.loop_time_s / (duration - double(k0) * st.dt_s),
+                      k_end - k0, res.loop_time_s, ps_this / res.loop_time_s,
+                      res.loop_time_s / (t_end - double(k0) * st.dt_s),
                       c.run.window_s[0], c.run.window_s[1], res.mean_fx_window_N));
-    flush(steps, res.wall_time_s - wall_before);
+    flush(k_end, res.wall_time_s - wall_before);
   } catch (const std::exception& e) {
     // Outputs stay consistent: hull_force.csv holds the rows up to the stop, particles/ the snapshots written
     // before it, meta.json says failed with the reason (a guard stop: step, piece and cause).
