@@ -345,6 +345,20 @@ void section_failures(const Study& s, std::string& md) {
   md += "\n";
 }
 
+// The completed runs of a manifest group, each once, in manifest order.
+std::vector<const Run*> completed_runs(Study& s, const std::string& group) {
+  std::vector<const Run*> runs;
+  for (const auto& row : s.rows) {
+    if (row.group != group) continue;
+    const Run& r = s.run_of(row);
+    if (r.ok && std::find(runs.begin(), runs.end(), &r) == runs.end()) runs.push_back(&r);
+  }
+  return runs;
+}
+bool any_paper_case(const std::vector<const Run*>& runs) {
+  return std::any_of(runs.begin(), runs.end(), [](const Run* r) { return r->base_case == "jbc_ia_5kn"; });
+}
+
 void section_paper(Study& s, std::string& md) {
   md += "## (a) Paper comparison\n\n";
   std::vector<const Row*> rows;
@@ -354,9 +368,8 @@ void section_paper(Study& s, std::string& md) {
     md += "No run of group `paper` in this study.\n\n";
     return;
   }
-  bool any_paper = false;
-  for (const Row* r : rows) any_paper = any_paper || (s.run_of(*r).ok && s.run_of(*r).base_case == "jbc_ia_5kn");
-  if (!any_paper)
+  const auto completed = completed_runs(s, "paper");
+  if (!any_paper_case(completed))
     md += "**No completed run of the paper case (cases/jbc_ia_5kn) is in this study. Every row below is a "
           "reduced case: its full-scale number is the reduced scene scaled by lambda^3, NOT the paper's result "
           "and not comparable one to one with 393 / 378 kN.**\n\n";
@@ -384,13 +397,9 @@ void section_paper(Study& s, std::string& md) {
   }
   md += "\nHull parameters used for R_CH (full scale, measured on the STL by brash-post):\n\n"
         "| run | L [m] | B [m] | T [m] | alpha [deg] | phi2 [deg] | A_wf [m²] |\n|---|---|---|---|---|---|---|\n";
-  std::set<std::string> seen;
-  for (const Row* row : rows) {
-    const Run& r = s.run_of(*row);
-    if (!r.ok || !seen.insert(r.ref).second) continue;
-    md += fmt::format("| {} | {} | {} | {} | {} | {} | {} |\n", r.ref, optnum(r.lpp), optnum(r.beam),
-                      optnum(r.draft), optnum(r.alpha, 1), optnum(r.phi2, 1), optnum(r.awf, 0));
-  }
+  for (const Run* r : completed)
+    md += fmt::format("| {} | {} | {} | {} | {} | {} | {} |\n", r->ref, optnum(r->lpp), optnum(r->beam),
+                      optnum(r->draft), optnum(r->alpha, 1), optnum(r->phi2, 1), optnum(r->awf, 0));
   // Added mass vs drag, per engine and base case.
   md += "\nAdded mass vs drag (same engine and case): (R_added_mass - R_drag) / R_drag; paper: (393 - 378) / 378 = "
         "+4.0 %.\n\n| engine | case | R added mass [N] | R drag [N] | difference | CI95 of the difference |\n"
@@ -437,16 +446,8 @@ std::string run_gnuplot(const fs::path& gp, const fs::path& png) {
 // run of each engine), copied from the run directories that brash-post wrote them to.
 void section_figures(Study& s, std::string& md, const fs::path& fig_dir, const fs::path& doc_dir) {
   md += "### Figures (analogs of the paper's Fig. 4, 5 and 6)\n\n";
-  std::vector<const Run*> runs;
-  std::set<std::string> seen;
-  bool any_paper = false;
-  for (const auto& row : s.rows) {
-    if (row.group != "paper") continue;
-    const Run& r = s.run_of(row);
-    if (!r.ok || !seen.insert(r.ref).second) continue;
-    runs.push_back(&r);
-    any_paper = any_paper || r.base_case == "jbc_ia_5kn";
-  }
+  const auto runs = completed_runs(s, "paper");
+  const bool any_paper = any_paper_case(runs);
   if (runs.empty()) {
     md += "No completed run in section (a): no figures.\n\n";
     return;
