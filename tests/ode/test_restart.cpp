@@ -189,6 +189,38 @@ TEST_F(Restart, CullGeomsGiveTheSameRunAndResume) {
   EXPECT_LE(max_diff(f / "particles" / "particles_400.csv", h / "particles" / "particles_400.csv", 5, 8), 1e-6);
 }
 
+// The grid broad phase (default) and ODE's sweep and prune hand the same pairs to the narrow phase and the joints
+// are made in a fixed order: the runs are the same to the last bit, plain, with culling (frozen spheres as static
+// obstacles, deep ones out of collision detection) and with end walls; a run resumes with the broad phase it had.
+TEST_F(Restart, GridAndSapBroadPhasesGiveTheSameRun) {
+  const std::string cull = " --cull --cull-ahead 0.02 --cull-behind 0.02 --cull-side 0";
+  const fs::path s = kRoot / "S", gc = kRoot / "GC", sc = kRoot / "SC", gw = kRoot / "GW", sw = kRoot / "SW";
+  ASSERT_EQ(run(base_cmd(s) + " --broad-phase sap > /dev/null"), 0);
+  ASSERT_EQ(run(base_cmd(gc) + cull + " > /dev/null"), 0);
+  ASSERT_EQ(run(base_cmd(sc) + cull + " --broad-phase sap > /dev/null"), 0);
+  ASSERT_EQ(run(base_cmd(gw) + " --end-walls > /dev/null"), 0);
+  ASSERT_EQ(run(base_cmd(sw) + " --end-walls --broad-phase sap > /dev/null"), 0);
+  EXPECT_NE(slurp(kRoot / "A" / "meta.json").find("\"broad_phase\": \"grid\""), std::string::npos);
+  EXPECT_NE(slurp(s / "meta.json").find("\"broad_phase\": \"sap\""), std::string::npos);
+  for (const auto& [grid, sap] : {std::pair{kRoot / "A", s}, std::pair{gc, sc}, std::pair{gw, sw}}) {
+    SCOPED_TRACE(grid.filename().string());
+    const std::string f = slurp(grid / "hull_force.csv");
+    EXPECT_GT(f.size(), 200u);
+    EXPECT_EQ(f, slurp(sap / "hull_force.csv"));
+    EXPECT_FALSE(slurp(grid / "particles" / "particles_400.csv").empty());
+    EXPECT_EQ(slurp(grid / "particles" / "particles_400.csv"), slurp(sap / "particles" / "particles_400.csv"));
+  }
+  EXPECT_NE(slurp(gc / "hull_force.csv"), slurp(kRoot / "A" / "hull_force.csv"));  // culling did act
+  EXPECT_NE(slurp(gw / "particles" / "particles_400.csv"),
+            slurp(kRoot / "A" / "particles" / "particles_400.csv"));  // the end walls did act
+  // A sap run resumed goes on with sap, to the same end.
+  const fs::path r = kRoot / "SR";
+  ASSERT_EQ(run(base_cmd(r) + " --broad-phase sap --crash-after-step 230"), 137);
+  ASSERT_EQ(run(resume_cmd(r)), 0);
+  EXPECT_NE(slurp(r / "meta.json").find("\"broad_phase\": \"sap\""), std::string::npos);
+  EXPECT_LE(max_diff(s / "hull_force.csv", r / "hull_force.csv", 1, 4), 1e-6);
+}
+
 // speedups.early_stop_rel_ci in brash-ode: the smoke case with a row every 0.001 s (window [0.1, 0.2] s), run to the
 // end, then with early_stop_rel_ci 0.5: it stops exactly where the rule replayed on the full run's record says
 // (ODE runs are deterministic, so the stopped run is the full run's prefix), its record and case end there.

@@ -2,6 +2,9 @@
 #pragma once
 #include <CLI/CLI.hpp>
 
+#include <map>
+#include <string>
+
 #include "brash/ode/run_case.hpp"
 
 namespace brash::ode {
@@ -22,6 +25,11 @@ inline void add_run_options(CLI::App& app, RunOptions& o, std::string& implicit_
   app.add_option("--implicit", implicit_mode, "implicit added mass in ODE: effective_mass | scale_forces")
       ->check(CLI::IsMember({"effective_mass", "scale_forces"}))
       ->capture_default_str();
+  app.add_option("--broad-phase", o.stepper.broad_phase,
+                 "broad phase: grid (ours, follows the active spheres) | sap (ODE's sweep and prune); same contacts")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, BroadPhase>{{"grid", BroadPhase::Grid},
+                                                                            {"sap", BroadPhase::Sap}}))
+      ->default_str("grid");
   app.add_flag("--auto-disable", o.skips.auto_disable, "skip: ODE auto-disable of resting spheres far from the hull");
   app.add_option("--disable-linear", o.skips.disable_linear_m_s, "auto-disable linear speed threshold [m/s]")
       ->capture_default_str();

@@ -152,6 +152,7 @@ nlohmann::json options_json(const RunOptions& o) {
           {"contact_surface_layer_m", st.contact_surface_layer},
           {"max_contacts_per_pair", st.max_contacts_per_pair},
           {"angular_damping", st.angular_damping},
+          {"broad_phase", st.broad_phase == BroadPhase::Sap ? "sap" : "grid"},
           {"auto_disable", k.auto_disable},
           {"disable_linear_m_s", k.disable_linear_m_s},
           {"disable_angular_rad_s", k.disable_angular_rad_s},
@@ -195,6 +196,8 @@ RunOptions options_from_meta(const fs::path& run_dir, const RunOptions& cli) {
     o.stepper.contact_surface_layer = j.at("contact_surface_layer_m");
     o.stepper.max_contacts_per_pair = j.at("max_contacts_per_pair");
     o.stepper.angular_damping = j.at("angular_damping");
+    // Runs before the switch existed used sap; grid gives the same contacts (see world.hpp), so they go on with it.
+    o.stepper.broad_phase = j.value("broad_phase", "grid") == "sap" ? BroadPhase::Sap : BroadPhase::Grid;
     o.skips.auto_disable = j.at("auto_disable");
     o.skips.disable_linear_m_s = j.at("disable_linear_m_s");
     o.skips.disable_angular_rad_s = j.at("disable_angular_rad_s");

@@ -57,7 +57,10 @@ World::World(const core::FluidParams& fluid, const StepperSettings& stepper, con
   dWorldSetAutoDisableSteps(world_, skips_.disable_steps);
   dWorldSetAutoDisableTime(world_, 0);
   dWorldSetAutoDisableAverageSamplesCount(world_, 10);
-  space_ = dSweepAndPruneSpaceCreate(nullptr, dSAP_AXES_XYZ);  // x (channel length) first
+  // With the grid broad phase the geoms still live in a space (the trimesh collider expects one), but a simple
+  // space that is never collided costs nothing per step.
+  space_ = stepper_.broad_phase == BroadPhase::Sap ? dSweepAndPruneSpaceCreate(nullptr, dSAP_AXES_XYZ)  // x first
+                                                  : dSimpleSpaceCreate(nullptr);
   contacts_ = dJointGroupCreate(0);
   contact_buf_.resize(static_cast<std::size_t>(std::max(1, stepper_.max_contacts_per_pair)));
 }
@@ -98,6 +101,8 @@ std::size_t World::add_sphere(const Vec3& p, double radius_m, double density_kg_
   dGeomSetCollideBits(s.geom, kSphereBit | kHullBit | kWallBit);
   dGeomSetData(s.geom, tag(spheres_.size()));
   spheres_.push_back(s);
+  broad_spheres_stale_ = true;
+  if (spheres_.size() > std::numeric_limits<std::uint32_t>::max()) throw std::length_error("too many spheres");
   return spheres_.size() - 1;
 }
 
@@ -205,6 +210,7 @@ void World::update_cull() {
         if (deep == (dGeomIsEnabled(s.geom) != 0)) {
           if (deep) dGeomDisable(s.geom);
           else dGeomEnable(s.geom);
+          broad_spheres_stale_ = true;
         }
       }
     }
@@ -250,10 +256,11 @@ void World::apply_fluid() {
 
 void World::near_callback(void* data, dGeomID a, dGeomID b) { static_cast<World*>(data)->collide_pair(a, b); }
 
-void World::collide_pair(dGeomID a, dGeomID b) {
+void World::collide_pair(dGeomID a, dGeomID b) { collide_tagged(a, untag(a), b, untag(b)); }
+
+void World::collide_tagged(dGeomID a, std::size_t ta, dGeomID b, std::size_t tb) {
   // Order: sphere first (the robust feedback rule of ode.md: attach sphere first, F_hull = -sum f1); for two
   // spheres the lower index first, so a pair always collides the same way round whatever the broad phase does.
-  std::size_t ta = untag(a), tb = untag(b);
   if (!is_sphere_tag(ta)) {
     std::swap(a, b);
     std::swap(ta, tb);
@@ -306,13 +313,121 @@ void World::collide_pair(dGeomID a, dGeomID b) {
   contacts_this_step_ += static_cast<std::size_t>(n);
 }
 
+void World::collide_grid() {
+  if (broad_spheres_stale_) {
+    broad_spheres_.clear();
+    for (std::size_t i = 0; i < spheres_.size(); ++i)
+      if (dGeomIsEnabled(spheres_[i].geom)) broad_spheres_.push_back(static_cast<std::uint32_t>(i));
+    broad_spheres_stale_ = false;
+  }
+  const std::size_t n = broad_spheres_.size();
+  if (n == 0) return;
+  // AABBs (centre +- r, as ODE's sphere AABB) and their x-y extent; a non-finite position (the guard ends such a
+  // run) gets cell 0 and fails every overlap test below.
+  grid_unsorted_.resize(n);
+  double x0 = std::numeric_limits<double>::max(), y0 = x0, x1 = std::numeric_limits<double>::lowest(), y1 = x1;
+  for (std::size_t k = 0; k < n; ++k) {
+    const SphereRec& s = spheres_[broad_spheres_[k]];
+    const dReal* p = dBodyGetPosition(s.body);
+    grid_unsorted_[k] = GridItem{p[0], p[1], p[2], s.radius_m, broad_spheres_[k], 0};
+    if (std::isfinite(p[0]) && std::isfinite(p[1])) {
+      x0 = std::min(x0, p[0]), x1 = std::max(x1, p[0]);
+      y0 = std::min(y0, p[1]), y1 = std::max(y1, p[1]);
+    }
+  }
+  // Cell edge >= the largest diameter: spheres whose AABBs overlap are in the same or neighbouring cells. A few
+  // stray spheres far away would make the grid huge, so the cell grows until there are at most ~4 cells per sphere.
+  double cell = 2.0 * max_radius_m_;
+  std::size_t nx = 1, ny = 1;
+  if (x1 >= x0) {
+    for (;;) {
+      nx = static_cast<std::size_t>((x1 - x0) / cell) + 1;
+      ny = static_cast<std::size_t>((y1 - y0) / cell) + 1;
+      if (nx * ny <= 4 * n + 1024) break;
+      cell *= 2;
+    }
+  } else {
+    x0 = y0 = 0;
+  }
+  const std::size_t ncells = nx * ny;
+  cell_start_.assign(ncells + 1, 0);
+  for (auto& it : grid_unsorted_) {
+    std::size_t ix = 0, iy = 0;
+    if (std::isfinite(it.x) && std::isfinite(it.y)) {
+      ix = std::min(nx - 1, static_cast<std::size_t>((it.x - x0) / cell));
+      iy = std::min(ny - 1, static_cast<std::size_t>((it.y - y0) / cell));
+    }
+    it.cell = static_cast<std::uint32_t>(ix * ny + iy);
+    ++cell_start_[it.cell + 1];
+  }
+  for (std::size_t c = 0; c < ncells; ++c) cell_start_[c + 1] += cell_start_[c];
+  grid_items_.resize(n);
+  {
+    std::vector<std::uint32_t>& fill = cell_fill_;
+    fill.assign(cell_start_.begin(), cell_start_.end() - 1);
+    for (const auto& it : grid_unsorted_) grid_items_[fill[it.cell]++] = it;
+  }
+  const auto overlap = [](const GridItem& a, const GridItem& b) {
+    const double reach = a.r + b.r;
+    return std::abs(a.x - b.x) <= reach && std::abs(a.y - b.y) <= reach && std::abs(a.z - b.z) <= reach;
+  };
+  // The tags are known here (sphere index + 1, 0 for the hull, kWallTag + w): no dGeomGetData lookups.
+  const auto collide_spheres = [this](std::uint32_t i, std::uint32_t j) {
+    collide_tagged(spheres_[i].geom, std::size_t(i) + 1, spheres_[j].geom, std::size_t(j) + 1);
+  };
+  // Sphere pairs: each cell with itself and with 4 of its 8 neighbours (the other 4 see it from their side).
+  for (std::size_t ix = 0; ix < nx; ++ix) {
+    for (std::size_t iy = 0; iy < ny; ++iy) {
+      const std::size_t c = ix * ny + iy;
+      const std::uint32_t b0 = cell_start_[c], b1 = cell_start_[c + 1];
+      if (b0 == b1) continue;
+      std::array<std::size_t, 4> nb{};
+      std::size_t m = 0;
+      if (iy + 1 < ny) nb[m++] = c + 1;
+      if (ix + 1 < nx) {
+        if (iy > 0) nb[m++] = c + ny - 1;
+        nb[m++] = c + ny;
+        if (iy + 1 < ny) nb[m++] = c + ny + 1;
+      }
+      for (std::uint32_t i = b0; i < b1; ++i) {
+        const GridItem& a = grid_items_[i];
+        for (std::uint32_t j = i + 1; j < b1; ++j)
+          if (overlap(a, grid_items_[j])) collide_spheres(a.sphere, grid_items_[j].sphere);
+        for (std::size_t q = 0; q < m; ++q)
+          for (std::uint32_t j = cell_start_[nb[q]]; j < cell_start_[nb[q] + 1]; ++j)
+            if (overlap(a, grid_items_[j])) collide_spheres(a.sphere, grid_items_[j].sphere);
+      }
+    }
+  }
+  // Spheres against the hull and the walls: AABB overlap, as dSpaceCollide does it.
+  const auto touches = [](const GridItem& a, const dReal* box) {
+    return a.x + a.r >= box[0] && a.x - a.r <= box[1] && a.y + a.r >= box[2] && a.y - a.r <= box[3] &&
+           a.z + a.r >= box[4] && a.z - a.r <= box[5];
+  };
+  dReal hull_box[6];
+  if (hull_geom_) dGeomGetAABB(hull_geom_, hull_box);
+  wall_boxes_.resize(walls_.size());
+  for (std::size_t w = 0; w < walls_.size(); ++w) dGeomGetAABB(walls_[w], wall_boxes_[w].data());
+  for (const auto& a : grid_items_) {
+    const dGeomID ga = spheres_[a.sphere].geom;
+    if (hull_geom_ && touches(a, hull_box)) collide_tagged(ga, std::size_t(a.sphere) + 1, hull_geom_, 0);
+    for (std::size_t w = 0; w < walls_.size(); ++w)
+      if (touches(a, wall_boxes_[w].data())) collide_tagged(ga, std::size_t(a.sphere) + 1, walls_[w], kWallTag + w);
+  }
+}
+
 void World::create_joints() {
-  std::sort(pending_.begin(), pending_.end(), [](const PendingContact& x, const PendingContact& y) {
+  // Sort small keys, not the contacts themselves (a dContact is ~200 bytes).
+  joint_order_.resize(pending_.size());
+  for (std::size_t i = 0; i < pending_.size(); ++i)
+    joint_order_[i] = JointOrder{pending_[i].a, pending_[i].key, pending_[i].slot, i};
+  std::sort(joint_order_.begin(), joint_order_.end(), [](const JointOrder& x, const JointOrder& y) {
     if (x.a != y.a) return x.a < y.a;
     if (x.key != y.key) return x.key < y.key;
     return x.slot < y.slot;
   });
-  for (auto& p : pending_) {
+  for (const auto& o : joint_order_) {
+    auto& p = pending_[o.index];
     dJointID j = dJointCreateContact(world_, contacts_, &p.c);
     dJointAttach(j, p.ba, p.bb);
     if (p.hull) {
@@ -333,7 +448,8 @@ void World::step() {
   hull_feedback_.clear();
   contacts_this_step_ = 0;
   pending_.clear();
-  dSpaceCollide(space_, this, &World::near_callback);
+  if (stepper_.broad_phase == BroadPhase::Sap) dSpaceCollide(space_, this, &World::near_callback);
+  else collide_grid();
   create_joints();
   stats_.wall_collide_s += seconds_since(t0);
   t0 = clock::now();
@@ -392,6 +508,7 @@ void World::save_state(restart::Writer& w) const {
 }
 
 void World::load_state(restart::Reader& r) {
+  broad_spheres_stale_ = true;
   const auto n = r.get<std::uint64_t>();
   const auto nw = r.get<std::uint64_t>();
   const bool hull = r.get<std::uint8_t>() != 0;

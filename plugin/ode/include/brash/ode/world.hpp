@@ -5,7 +5,7 @@
 //   1. fluid: for every awake, uncull'd sphere: out = core::evaluate(params, {r, m, x(n), v(n)}, state, dt);
 //      the applied force is G = (-m g e_z + out.force_N) (.) out.scale (.) (M / m) and the body mass is M
 //      (see "Implicit added mass in ODE" below); state = advance(state, v(n)).
-//   2. collide: SAP broad phase, contact joints (dContactApprox1, Coulomb mu per pair type, sphere body first).
+//   2. collide: broad phase (our x-y grid, or ODE's sweep-and-prune), contact joints (dContactApprox1, Coulomb mu per pair type, sphere body first).
 //   3. dWorldQuickStep (semi-implicit Euler: v(n+1) = v(n) + dt (G + F_contact) / M, x(n+1) = x(n) + dt v(n+1)).
 //   4. hull force = -sum fb.f1 over the hull contacts (feedback read after the step, before emptying the group).
 //
@@ -42,6 +42,14 @@ using core::Vec3;
 
 enum class ImplicitMode { EffectiveMass, ScaleForces };
 
+// Broad phase. Grid: a uniform x-y grid (cell = the largest sphere diameter) over the spheres still in collision
+// detection, rebuilt every step, plus an AABB test of each of them against the hull and the walls; its cost
+// follows the active spheres only. Sap: ODE's sweep-and-prune space (dSpaceCollide), which also walks every geom
+// of the space each step (~18 % of a step on the paper scene, docs/ode.md). Both hand every pair whose AABBs
+// overlap to the same narrow phase (dCollide) and the joints are created in a fixed order, so the run is the same
+// to the last bit (test_restart: GridAndSapBroadPhasesGiveTheSameRun); Sap is kept for checking.
+enum class BroadPhase { Grid, Sap };
+
 struct StepperSettings {
   double dt_s = 5e-4;              // ode.md: 5e-4 recommended, 1e-3 cross-checked
   int iterations = 20;             // dWorldSetQuickStepNumIterations
@@ -50,6 +58,7 @@ struct StepperSettings {
   double contact_surface_layer = 0.0;
   int max_contacts_per_pair = 8;   // sphere-trimesh gives one contact per touched triangle (up to 6)
   double angular_damping = 0.0;    // dBodySetAngularDamping (fluid torque is neglected: default off)
+  BroadPhase broad_phase = BroadPhase::Grid;
 };
 
 struct Frictions {
@@ -157,6 +166,8 @@ class World {
   double max_radius_m_ = 0;
   static void near_callback(void* data, dGeomID a, dGeomID b);
   void collide_pair(dGeomID a, dGeomID b);
+  void collide_tagged(dGeomID a, std::size_t tag_a, dGeomID b, std::size_t tag_b);  // tags: see world.cpp
+  void collide_grid();
   void create_joints();
   static constexpr std::size_t kPartnerWall = std::size_t(1) << 40, kPartnerHull = std::size_t(1) << 41;
   void apply_fluid();
@@ -192,6 +203,24 @@ class World {
     dContact c{};
   };
   std::vector<PendingContact> pending_;
+  struct JointOrder {
+    std::size_t a = 0, key = 0;
+    int slot = 0;
+    std::size_t index = 0;  // into pending_
+  };
+  std::vector<JointOrder> joint_order_;
+  // Grid broad phase (collide_grid): the spheres whose geom is enabled (rebuilt when a geom is switched), and
+  // per step their AABB data sorted by cell (counting sort: cell_start_[c] .. cell_start_[c + 1]).
+  struct GridItem {
+    double x = 0, y = 0, z = 0, r = 0;
+    std::uint32_t sphere = 0;
+    std::uint32_t cell = 0;
+  };
+  std::vector<std::uint32_t> broad_spheres_;
+  bool broad_spheres_stale_ = true;
+  std::vector<GridItem> grid_unsorted_, grid_items_;
+  std::vector<std::uint32_t> cell_start_, cell_fill_;
+  std::vector<std::array<dReal, 6>> wall_boxes_;
   Vec3 hull_force_N_ = Vec3::Zero();
   std::size_t hull_contacts_ = 0;
   std::size_t contacts_this_step_ = 0;
