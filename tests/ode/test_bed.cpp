@@ -88,3 +88,22 @@ TEST(FloatingBed, AddedMassAtRestStaysAtRest) {
   EXPECT_LT(r.vmax, 0.05);             // isolated slips stay small (< 10 % of the ship speed)
   EXPECT_LT(r.max_disp, 0.5 * 0.017578);  // no sphere moves by more than half a diameter
 }
+
+// The grid broad phase with a lost sphere (1e200 m away, as after a blow-up the guard has not caught yet): the grid
+// neither grows with it nor overflows, the touching pair still collides, and sap finds the same contacts.
+TEST(BroadPhase, LostSphereDoesNotStretchTheGrid) {
+  static OdeLibrary lib;
+  for (const BroadPhase bp : {BroadPhase::Grid, BroadPhase::Sap}) {
+    StepperSettings st;
+    st.broad_phase = bp;
+    World w(brash::core::FluidParams{}, st, Frictions{});
+    w.add_sphere(Vec3(0, 0, 0), 0.01, 900);
+    w.add_sphere(Vec3(0.019, 0, 0), 0.01, 900);      // overlaps the first by 1 mm
+    w.add_sphere(Vec3(1e200, -1e200, 0), 0.01, 900);  // lost
+    w.add_sphere(Vec3(0.5, 0.5, 0), 0.01, 900);       // alone
+    w.step();
+    EXPECT_EQ(w.stats().contacts_last, 1u) << (bp == BroadPhase::Grid ? "grid" : "sap");
+    EXPECT_GT(w.velocity(1).x(), 0.0);  // pushed apart
+    EXPECT_LT(w.velocity(0).x(), 0.0);
+  }
+}

@@ -322,28 +322,31 @@ void World::collide_grid() {
   }
   const std::size_t n = broad_spheres_.size();
   if (n == 0) return;
-  // AABBs (centre +- r, as ODE's sphere AABB) and their x-y extent; a non-finite position (the guard ends such a
-  // run) gets cell 0 and fails every overlap test below.
+  // AABBs (centre +- r, as ODE's sphere AABB) and their x-y extent. A sphere that is lost (non-finite or beyond
+  // 1e6 m in x or y: the guard ends such a run) goes to cell 0 and does not stretch the grid.
+  const auto lost = [](double x, double y) { return !(std::abs(x) <= 1e6 && std::abs(y) <= 1e6); };
   grid_unsorted_.resize(n);
   double x0 = std::numeric_limits<double>::max(), y0 = x0, x1 = std::numeric_limits<double>::lowest(), y1 = x1;
   for (std::size_t k = 0; k < n; ++k) {
     const SphereRec& s = spheres_[broad_spheres_[k]];
     const dReal* p = dBodyGetPosition(s.body);
     grid_unsorted_[k] = GridItem{p[0], p[1], p[2], s.radius_m, broad_spheres_[k], 0};
-    if (std::isfinite(p[0]) && std::isfinite(p[1])) {
+    if (!lost(p[0], p[1])) {
       x0 = std::min(x0, p[0]), x1 = std::max(x1, p[0]);
       y0 = std::min(y0, p[1]), y1 = std::max(y1, p[1]);
     }
   }
   // Cell edge >= the largest diameter: spheres whose AABBs overlap are in the same or neighbouring cells. A few
   // stray spheres far away would make the grid huge, so the cell grows until there are at most ~4 cells per sphere.
-  double cell = 2.0 * max_radius_m_;
+  double cell = std::max(2.0 * max_radius_m_, 1e-9);
   std::size_t nx = 1, ny = 1;
   if (x1 >= x0) {
-    for (;;) {
-      nx = static_cast<std::size_t>((x1 - x0) / cell) + 1;
-      ny = static_cast<std::size_t>((y1 - y0) / cell) + 1;
-      if (nx * ny <= 4 * n + 1024) break;
+    for (;;) {  // counted in double: no overflow however far apart the spheres are
+      const double fx = std::floor((x1 - x0) / cell) + 1, fy = std::floor((y1 - y0) / cell) + 1;
+      if (fx * fy <= static_cast<double>(4 * n + 1024)) {
+        nx = static_cast<std::size_t>(fx), ny = static_cast<std::size_t>(fy);
+        break;
+      }
       cell *= 2;
     }
   } else {
@@ -353,7 +356,7 @@ void World::collide_grid() {
   cell_start_.assign(ncells + 1, 0);
   for (auto& it : grid_unsorted_) {
     std::size_t ix = 0, iy = 0;
-    if (std::isfinite(it.x) && std::isfinite(it.y)) {
+    if (!lost(it.x, it.y)) {
       ix = std::min(nx - 1, static_cast<std::size_t>((it.x - x0) / cell));
       iy = std::min(ny - 1, static_cast<std::size_t>((it.y - y0) / cell));
     }
