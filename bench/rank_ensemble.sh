@@ -7,8 +7,9 @@
 # with its 95 % confidence interval (Student t): the rank count makes no difference beyond 1 % when that interval
 # lies inside [-1 %, +1 %].
 #   bash bench/rank_ensemble.sh [N_SEEDS (10)] [OUT (runs/rank-ensemble)]
-# Each run takes ~4-5 min on a quiet 2-core machine; finished runs are kept and skipped, so the script can be
-# stopped and started again, and N raised later. BRASH_BIN (default build/bin) holds the executables; RANKS="1" or
+# The 1-rank runs go two at a time (JOBS, one per core), then the 2-rank runs one at a time: ~4-5 min per pair on a
+# quiet 2-core machine. Finished runs are kept and skipped, so the script can be stopped and started again, and N
+# raised later. BRASH_BIN (default build/bin) holds the executables; RANKS="1" or
 # RANKS="2" runs one side only (e.g. the 1-rank runs beside another job, the 2-rank runs on a quiet machine).
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
@@ -20,6 +21,13 @@ for exe in brash-case brash-pack brash-liggghts-run brash-post; do
 done
 mkdir -p "$out/cases"
 complete() { [ -f "$1/report.json" ] && grep -q '"status": "complete"' "$1/report.json"; }
+run_one() {  # seed, ranks
+  local case_dir="$out/cases/quick_s$1" run="$out/s$1-np$2"
+  complete "$run" && return 0
+  rm -rf "$run"
+  echo "== seed $1, $2 rank(s) -> $run ($(date +%H:%M:%S))"
+  "$bin/brash-liggghts-run" "$case_dir" --np "$2" --out "$run" > "$run.log" 2>&1 || echo "   seed $1, $2 rank(s) failed (exit $?): see $run.log"
+}
 for s in $(seq 1 "$n_seeds"); do
   case_dir="$out/cases/quick_s$s"
   if [ ! -f "$case_dir/generated/packing.csv" ]; then
@@ -28,14 +36,18 @@ for s in $(seq 1 "$n_seeds"); do
     # the template's hull file is found through BRASH_HULL_DIR / the build's hull_meshes, as for cases/jbc_quick
     "$bin/brash-pack" "$case_dir" > "$case_dir/pack.log"
   fi
-  for np in ${RANKS:-1 2}; do
-    run="$out/s$s-np$np"
-    if complete "$run"; then continue; fi
-    rm -rf "$run"
-    echo "== seed $s, $np rank(s) -> $run ($(date +%H:%M:%S))"
-    "$bin/brash-liggghts-run" "$case_dir" --np "$np" --out "$run" > "$run.log" 2>&1 ||
-      echo "   failed (exit $?): see $run.log"
+done
+# 1-rank runs JOBS at a time (default 2: one per core), 2-rank runs one at a time.
+for np in ${RANKS:-1 2}; do
+  for s in $(seq 1 "$n_seeds"); do
+    if [ "$np" = 1 ] && [ "${JOBS:-2}" -gt 1 ]; then
+      run_one "$s" 1 &
+      while [ "$(jobs -rp | wc -l)" -ge "${JOBS:-2}" ]; do wait -n || true; done
+    else
+      run_one "$s" "$np"
+    fi
   done
+  wait
 done
 /usr/bin/python3 - "$out" "$n_seeds" <<'EOF'
 import json, math, os, sys

@@ -103,6 +103,20 @@ int run_report(const fs::path& run_dir, const ReportOptions& opt) {
       return pngs;
     });
   }
+  if (a.case_.band_m && !entries.empty()) {
+    ok &= step(a, outputs, "contact band check", [&] {
+      const auto& b = *(a.band = check_contact_band(entries, (*a.case_.band_m)[0], a.case_.water_level_m,
+                                                    a.meta.in_progress()));
+      if (b.passed_under())
+        a.notes.push_back(fmt::format(
+            "contact band: up to {} pieces at once (t = {:.2f} s) reached below the hull's contact band (hull.band_m: "
+            "{:.3g} m below the waterline; deepest piece bottom {:.3g} m below at t = {:.2f} s): the band has no "
+            "triangles there, so wherever such a piece touches the hull below the band that contact is missing; "
+            "deepen hull.band_m",
+            b.pieces_below_max, b.pieces_below_t_s, b.band_below_m, b.deepest_bottom_m, b.deepest_t_s));
+      return std::vector<fs::path>{};
+    });
+  }
 #ifdef BRASH_POST_HAVE_VTK
   if (opt.paraview && !entries.empty()) {
     ok &= step(a, outputs, "ParaView output", [&] {

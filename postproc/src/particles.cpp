@@ -65,4 +65,23 @@ std::vector<std::size_t> nearest_snapshots(const std::vector<SnapshotEntry>& ent
   return out;
 }
 
+BandCheck check_contact_band(const std::vector<SnapshotEntry>& entries, double band_below_m, double water_level_m,
+                             bool run_in_progress) {
+  BandCheck b;
+  b.band_below_m = band_below_m;
+  for (const auto& e : entries) {
+    if (!std::filesystem::exists(e.file)) continue;
+    const Snapshot s = read_snapshot(e.file, run_in_progress);
+    ++b.snapshots;
+    std::size_t below = 0;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      const double depth = water_level_m - (s.z[i] - s.radius[i]);
+      if (depth > b.deepest_bottom_m) b.deepest_bottom_m = depth, b.deepest_t_s = e.t_s;
+      if (depth > band_below_m) ++below;
+    }
+    if (below > b.pieces_below_max) b.pieces_below_max = below, b.pieces_below_t_s = e.t_s;
+  }
+  return b;
+}
+
 }  // namespace brash::post

@@ -23,6 +23,7 @@ PostCase read_post_case(const std::filesystem::path& case_yaml) {
   p.window_s = c.run.window_s;
   p.channel_width_m = c.channel.width_m;
   p.water_level_m = c.water.level_m;
+  p.band_m = c.hull.band_m;
   const auto put = [&](const char* key, const std::optional<double>& v) {
     if (v) p.fsicr_overrides[key] = *v;
   };

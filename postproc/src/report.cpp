@@ -214,6 +214,14 @@ nlohmann::ordered_json report_json(const RunAnalysis& a) {
   j["wall_time_s"] = opt(a.meta.wall_time_s);
   j["particle_steps"] = opt(a.meta.particle_steps);
   j["paper_full_kN"] = {{"added_mass", PaperValues::added_mass_full_kN}, {"drag", PaperValues::drag_full_kN}};
+  if (a.band)
+    j["contact_band"] = {{"band_below_m", a.band->band_below_m},
+                         {"deepest_piece_bottom_below_waterline_m", a.band->deepest_bottom_m},
+                         {"deepest_t_s", a.band->deepest_t_s},
+                         {"pieces_below_band_max", a.band->pieces_below_max},
+                         {"pieces_below_band_t_s", a.band->pieces_below_t_s},
+                         {"snapshots", a.band->snapshots},
+                         {"ok", !a.band->passed_under()}};
   j["notes"] = a.notes;
   return j;
 }

@@ -21,6 +21,8 @@ struct SyntheticRun {
   bool truncated_tail = false;        // last line cut without newline
   std::vector<double> snapshot_times_s{0.0, 20.0, 40.0};
   int particles = 60;
+  std::string hull_extra_yaml;        // more hull: keys, e.g. "  band_m: [0.15, 0.1]\n"
+  double deep_piece_z_m = 0;          // nonzero: piece 0's centre z in the second snapshot
   // Written values (read back by the tests).
   std::vector<double> t_s, fx_N, fy_N_series, fz_N_series;
 };
@@ -33,11 +35,11 @@ inline void write_text(const std::filesystem::path& p, const std::string& s) {
 // Case: the fsicr.md Panamax at 1:28.5 (so case dimensions * lambda = L 199.11, B 32, T 11.733) with
 // every bow parameter overridden to the first worked example (R_CH = 990 kN). The hull file does not
 // exist, so nothing is measured.
-inline std::string synthetic_case_yaml(double window_t1_s = 40.0) {
+inline std::string synthetic_case_yaml(double window_t1_s = 40.0, const std::string& hull_extra_yaml = "") {
   return fmt::format(R"(name: synthetic
 description: "postproc test"
 hull:
-  file: no_such_hull.stl
+{}  file: no_such_hull.stl
   draft_m: {}
   lpp_m: {}
   beam_m: {}
@@ -61,13 +63,13 @@ fsicr:
   L_par_m: 100
   L_bow_m: 40
   A_wf_m2: 900
-)", 11.733 / 28.5, 199.11 / 28.5, 32.0 / 28.5, window_t1_s);
+)", hull_extra_yaml, 11.733 / 28.5, 199.11 / 28.5, 32.0 / 28.5, window_t1_s);
 }
 
 inline void write_synthetic_run(const std::filesystem::path& dir, SyntheticRun& r) {
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir / "particles");
-  write_text(dir / "case.yaml", synthetic_case_yaml());
+  write_text(dir / "case.yaml", synthetic_case_yaml(40.0, r.hull_extra_yaml));
   write_text(dir / "meta.json", fmt::format(R"({{"engine": "synthetic", "engine_version": "1.0", "fluid_model": "added_mass",
  "treatment": "implicit", "dt_s": 5e-5, "ranks": 2, "particles": {}, "wall_time_s": 123.5,
  "particle_steps": 4.2e9, "git_commit": "abc", "status": "{}", "reason": ""}})", r.particles, r.status));
@@ -101,7 +103,8 @@ inline void write_synthetic_run(const std::filesystem::path& dir, SyntheticRun& 
     index += fmt::format("{},{},{},{}\n", step, t, file, -1.0 + 0.482 * t);
     std::string p = "id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z\n";
     for (int i = 0; i < r.particles; ++i) {
-      const double x = 0.1 * i + 0.01 * t, y = -1.0 + 0.03 * i, z = -0.005 * (i % 3);
+      const double x = 0.1 * i + 0.01 * t, y = -1.0 + 0.03 * i;
+      const double z = (i == 0 && k == 1 && r.deep_piece_z_m != 0) ? r.deep_piece_z_m : -0.005 * (i % 3);
       p += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{}\n", i, x, y, z, 0.0088, 0.01 * i, 0.0, -0.001 * i,
                        0.9 + 0.001 * (i % 10), 0.5, 0.5, i % 2 ? 0.0 : 0.5);
     }

@@ -146,3 +146,36 @@ TEST_F(Outputs, CompareMakesTableCsvAndPlot) {
   fs::remove_all(second);
   fs::remove_all(out);
 }
+
+// The contact band check of brash-post: a piece pushed 0.2 m down (bottom 0.2088 m below the waterline) in the
+// snapshot at t = 20 s, with the contact hull cut 0.15 m below the waterline, is reported (note, contact_band.ok
+// false, the deepest bottom and its time); a band 0.3 m deep passes; a full hull is not checked.
+TEST(ContactBand, PieceBelowTheBandIsReported) {
+  struct Variant {
+    std::string band;
+    bool checked, ok;
+  };
+  for (const auto& v : {Variant{"  band_m: [0.15, 0.1]\n", true, false}, Variant{"  band_m: [0.3, 0.1]\n", true, true},
+                        Variant{"", false, true}}) {
+    SCOPED_TRACE(v.band);
+    const auto dir = scratch("band");
+    SyntheticRun r;
+    r.hull_extra_yaml = v.band;
+    r.deep_piece_z_m = -0.2;
+    write_synthetic_run(dir, r);
+    ASSERT_EQ(sh(fmt::format("{} {} --no-plots --no-paraview > /dev/null 2>&1", BRASH_POST_EXE, dir.string())), 0);
+    const auto j = nlohmann::json::parse(brash::post::read_text_file(dir / "report.json"));
+    const std::string notes = j["notes"].dump();
+    ASSERT_EQ(j.contains("contact_band"), v.checked);
+    EXPECT_EQ(notes.find("contact band:") == std::string::npos, v.ok) << notes;
+    if (v.checked) {
+      const auto& b = j["contact_band"];
+      EXPECT_EQ(b["ok"].get<bool>(), v.ok);
+      EXPECT_NEAR(b["deepest_piece_bottom_below_waterline_m"].get<double>(), 0.2 + 0.0088, 1e-9);
+      EXPECT_DOUBLE_EQ(b["deepest_t_s"].get<double>(), 20.0);
+      EXPECT_EQ(b["snapshots"].get<int>(), 3);
+      EXPECT_EQ(b["pieces_below_band_max"].get<int>(), v.ok ? 0 : 1);
+    }
+    fs::remove_all(dir);
+  }
+}

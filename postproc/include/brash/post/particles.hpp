@@ -28,6 +28,23 @@ std::vector<SnapshotEntry> read_snapshot_index(const std::filesystem::path& part
 // Strict reader; InputError naming file and line.
 Snapshot read_snapshot(const std::filesystem::path& file, bool run_in_progress);
 
+// Does the ice stay within the hull's contact band (hull.band_m)? Below the band's lower edge the contact hull has
+// no triangles, so a piece pushed deeper beside the hull loses its hull contacts there (the guard only stops a run
+// once a piece is half inside the closed hull). Over every snapshot: the deepest piece bottom below the waterline,
+// and the most pieces at once whose bottom is below the band's edge.
+struct BandCheck {
+  double band_below_m = 0;           // hull.band_m[0]
+  double deepest_bottom_m = 0;       // max over snapshots of (water level - (z - r)), 0 if no piece is submerged
+  double deepest_t_s = 0;            // snapshot time of that piece
+  std::size_t pieces_below_max = 0;  // most pieces at once with their bottom below the band's edge
+  double pieces_below_t_s = 0;
+  std::size_t snapshots = 0;         // snapshots read
+  bool passed_under() const { return pieces_below_max > 0; }
+};
+// Snapshots whose file is missing are skipped.
+BandCheck check_contact_band(const std::vector<SnapshotEntry>& entries, double band_below_m, double water_level_m,
+                             bool run_in_progress);
+
 // Indices of the entries nearest to each requested time (duplicates removed, order kept).
 std::vector<std::size_t> nearest_snapshots(const std::vector<SnapshotEntry>& entries, const std::vector<double>& times_s);
 

@@ -19,6 +19,7 @@ struct PostCase {
   std::string fluid_model;
   double duration_s = 0;
   double channel_width_m = 0, water_level_m = 0;
+  std::optional<std::array<double, 2>> band_m;  // contact hull: [below, above] the waterline; nullopt = full hull
   std::array<double, 2> window_s{15.0, 40.0};
   // fsicr: overrides (full scale), keyed like FsicrParams fields: alpha_deg, phi1_deg, phi2_deg,
   // L_par_m, L_bow_m, A_wf_m2.

@@ -14,6 +14,7 @@
 #include <brash/post/blocking.hpp>
 #include <brash/post/force_history.hpp>
 #include <brash/post/fsicr.hpp>
+#include <brash/post/particles.hpp>
 #include <brash/post/post_case.hpp>
 #include <brash/post/run_meta.hpp>
 
@@ -68,6 +69,7 @@ struct RunAnalysis {
   double resistance_full_kN = 0, resistance_full_ci95_kN = 0;
   FsicrSummary fsicr;
   std::optional<double> ratio_fsicr_to_sim;
+  std::optional<BandCheck> band;   // set by brash-post's report when the case has a contact band and snapshots
   std::vector<std::string> notes;  // everything a reader must know (truncation, fallbacks, ...)
 };
 
