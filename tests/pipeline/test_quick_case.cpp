@@ -49,6 +49,9 @@ TEST(Pipeline, QuickCaseLiggghtsToReport) {
   EXPECT_NEAR(r["resistance_full_kN"].get<double>(),
               r["resistance_model_N"]["mean"].get<double>() * 28.5 * 28.5 * 28.5 / 1000, 1e-6);
   EXPECT_GT(r["fsicr"]["R_CH_kN"].get<double>(), 100.0);
+  // The ice stays within the contact band (hull.band_m) in the snapshots: nothing passes under it.
+  ASSERT_TRUE(r.contains("contact_band"));
+  EXPECT_TRUE(r["contact_band"]["ok"].get<bool>()) << r["contact_band"].dump();
 
   // ParaView files of the real run: the .pvd collection and its last particle file read back by meshio
   // (Debian's python3-meshio) with every field.
