@@ -1,60 +1,81 @@
 #!/usr/bin/env bash
-# Quick case on 1 and 2 MPI ranks, as an ensemble (issue 4: "the quick case mean resistance on 1 and 2 ranks
-# within 1 %"). A contact scene diverges chaotically from round-off, so one run per rank count is one realisation
-# each and their difference is dominated by run-to-run scatter. Here every member is a packing seed (ice.seed);
-# seed s runs on 1 and on 2 ranks with the same packing (a pair), so the pair's difference holds the chaotic scatter
-# only, not the packing's. The result is the mean of the paired relative differences (2 ranks - 1 rank) / mean,
-# with its 95 % confidence interval (Student t): the rank count makes no difference beyond 1 % when that interval
-# lies inside [-1 %, +1 %].
+# A case run as an ensemble of packing seeds, two ways per seed (issue 4: "the quick case mean resistance on 1 and 2
+# ranks within 1 %"; issue 9: a knob's error against the reference). A contact scene diverges chaotically from
+# round-off, so one run per variant is one realisation each and their difference is dominated by run-to-run scatter.
+# Here every member is a packing seed (ice.seed); seed s runs as side A and as side B with the same packing (a pair),
+# so the pair's difference holds the chaotic scatter and the effect of the change, not the packing's. The result is
+# the mean of the paired relative differences (B - A) / mean with its 95 % confidence interval (Student t): B makes
+# no difference beyond 1 % when that interval lies inside [-1 %, +1 %].
 #   bash bench/rank_ensemble.sh [N_SEEDS (10)] [OUT (runs/rank-ensemble)]
-# The 1-rank runs go two at a time (JOBS, one per core), then the 2-rank runs one at a time: ~4-5 min per pair on a
-# quiet 2-core machine. Finished runs are kept and skipped, so the script can be stopped and started again, and N
-# raised later. BRASH_BIN (default build/bin) holds the executables; RANKS="1" or
-# RANKS="2" runs one side only (e.g. the 1-rank runs beside another job, the 2-rank runs on a quiet machine).
+# env: CASE (cases/jbc_quick), SIDE_A ("1"), SIDE_B ("2"): a side is NP[:section.key=value,...] (MPI ranks, then
+# edits of the case, as in bench/speed_vs_error.sh), e.g. SIDE_B="1:run.timestep_s=2.0e-4" for the dt knob.
+# 1-rank runs go two at a time (JOBS, one per core), others one at a time: ~4-5 min per quick-case pair on a quiet
+# 2-core machine. Finished runs are kept and skipped, so the script can be stopped and started again, and N raised
+# later. BRASH_BIN (default build/bin) holds the executables.
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 n_seeds="${1:-10}"
 out="${2:-$here/runs/rank-ensemble}"
 bin="${BRASH_BIN:-$here/build/bin}"
+case_src="$(cd "${CASE:-$here/cases/jbc_quick}" && pwd)"
+sides=("${SIDE_A:-1}" "${SIDE_B:-2}")
 for exe in brash-case brash-pack brash-liggghts-run brash-post; do
   [ -x "$bin/$exe" ] || { echo "rank_ensemble: $bin/$exe not found (build first, or set BRASH_BIN)" >&2; exit 2; }
 done
 mkdir -p "$out/cases"
+np_of() { echo "${1%%:*}"; }
+edits_of() { [[ "$1" == *:* ]] && echo "${1#*:}" || true; }
+# run name of a side: np<N>, plus the edits when there are any (np1-run.timestep_s_2.0e-4)
+side_name() {
+  local e; e="$(edits_of "$1")"
+  echo "np$(np_of "$1")${e:+-$(printf '%s' "$e" | tr ',=' '__' | tr -cd 'A-Za-z0-9._-')}"
+}
+seed_case() { echo "$out/cases/$(basename "$case_src")_s$1"; }
 complete() { [ -f "$1/report.json" ] && grep -q '"status": "complete"' "$1/report.json"; }
-run_one() {  # seed, ranks
-  local case_dir="$out/cases/quick_s$1" run="$out/s$1-np$2"
+run_one() {  # seed, side
+  local run="$out/s$1-$(side_name "$2")" case_dir edits
   complete "$run" && return 0
+  case_dir="$(seed_case "$1")"; edits="$(edits_of "$2")"
+  if [ -n "$edits" ]; then  # the seed's case with the side's edits, on the seed's packing
+    mkdir -p "$case_dir-$(side_name "$2")"
+    python3 "$here/bench/case_edit.py" "$case_dir/case.yaml" "$case_dir-$(side_name "$2")/case.yaml" "$edits" "$case_dir"
+    case_dir="$case_dir-$(side_name "$2")"
+  fi
   rm -rf "$run"
-  echo "== seed $1, $2 rank(s) -> $run ($(date +%H:%M:%S))"
-  "$bin/brash-liggghts-run" "$case_dir" --np "$2" --out "$run" > "$run.log" 2>&1 || echo "   seed $1, $2 rank(s) failed (exit $?): see $run.log"
+  echo "== seed $1, $2 -> $run ($(date +%H:%M:%S))"
+  "$bin/brash-liggghts-run" "$case_dir" --np "$(np_of "$2")" --out "$run" > "$run.log" 2>&1 ||
+    echo "   seed $1, $2 failed (exit $?): see $run.log"
 }
 for s in $(seq 1 "$n_seeds"); do
-  case_dir="$out/cases/quick_s$s"
+  case_dir="$(seed_case "$s")"
   if [ ! -f "$case_dir/generated/packing.csv" ]; then
-    "$bin/brash-case" new "quick_s$s" --cases-dir "$out/cases" --template "$here/cases/jbc_quick/case.yaml" \
+    "$bin/brash-case" new "$(basename "$case_dir")" --cases-dir "$out/cases" --template "$case_src/case.yaml" \
       --seed "$s" --force > /dev/null
-    # the template's hull file is found through BRASH_HULL_DIR / the build's hull_meshes, as for cases/jbc_quick
+    # the template's hull file is found through BRASH_HULL_DIR / the build's hull_meshes, as for the case itself
     "$bin/brash-pack" "$case_dir" > "$case_dir/pack.log"
   fi
 done
-# 1-rank runs JOBS at a time (default 2: one per core), 2-rank runs one at a time.
-for np in ${RANKS:-1 2}; do
+for side in "${sides[@]}"; do
   for s in $(seq 1 "$n_seeds"); do
-    if [ "$np" = 1 ] && [ "${JOBS:-2}" -gt 1 ]; then
-      run_one "$s" 1 &
+    if [ "$(np_of "$side")" = 1 ] && [ "${JOBS:-2}" -gt 1 ]; then
+      run_one "$s" "$side" &
       while [ "$(jobs -rp | wc -l)" -ge "${JOBS:-2}" ]; do wait -n || true; done
     else
-      run_one "$s" "$np"
+      run_one "$s" "$side"
     fi
   done
   wait
 done
-/usr/bin/python3 - "$out" "$n_seeds" <<'EOF'
+/usr/bin/python3 - "$out" "$n_seeds" "$(basename "$case_src")" "${sides[0]}" "${sides[1]}" \
+  "$(side_name "${sides[0]}")" "$(side_name "${sides[1]}")" <<'EOF'
 import json, math, os, sys
-out, n = sys.argv[1], int(sys.argv[2])
+out, n, case, side_a, side_b, name_a, name_b = sys.argv[1], int(sys.argv[2]), *sys.argv[3:]
 # Student t 97.5 % quantiles for 1..30 degrees of freedom (then ~1.96)
 T = [12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228, 2.201, 2.179, 2.160, 2.145, 2.131,
      2.120, 2.110, 2.101, 2.093, 2.086, 2.080, 2.074, 2.069, 2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042]
+def label(side):
+    np_, _, edits = side.partition(':')
+    return '%s rank%s%s' % (np_, '' if np_ == '1' else 's', ', ' + edits if edits else '')
 def mean_N(run):
     try:
         r = json.load(open(os.path.join(out, run, 'report.json')))
@@ -63,15 +84,16 @@ def mean_N(run):
     if r.get('status') != 'complete':
         return None
     return r['resistance_model_N']['mean']
-print('== quick case (cases/jbc_quick, one packing seed per pair), mean resistance over its window, model scale')
-print('| seed | 1 rank [N] | 2 ranks [N] | (2 - 1) / mean |')
+la, lb = label(side_a), label(side_b)
+print('== %s, one packing seed per pair, mean resistance over its window, model scale' % case)
+print('| seed | A: %s [N] | B: %s [N] | (B - A) / mean |' % (la, lb))
 print('|---|---|---|---|')
-d, r1s, r2s = [], [], []
+d, ras, rbs = [], [], []
 for s in range(1, n + 1):
-    a, b = mean_N('s%d-np1' % s), mean_N('s%d-np2' % s)
+    a, b = mean_N('s%d-%s' % (s, name_a)), mean_N('s%d-%s' % (s, name_b))
     if a is None or b is None:
         print('| %d | %s | %s | (incomplete) |' % (s, a or '-', b or '-')); continue
-    d.append((b - a) / (0.5 * (a + b))); r1s.append(a); r2s.append(b)
+    d.append((b - a) / (0.5 * (a + b))); ras.append(a); rbs.append(b)
     print('| %d | %.3f | %.3f | %+.2f %% |' % (s, a, b, 100 * d[-1]))
 k = len(d)
 if k < 2:
@@ -79,9 +101,8 @@ if k < 2:
 mean = sum(d) / k
 sd = math.sqrt(sum((x - mean) ** 2 for x in d) / (k - 1))
 ci = (T[k - 2] if k - 1 <= len(T) else 1.96) * sd / math.sqrt(k)
-print('pairs: %d; ensemble mean 1 rank %.3f N, 2 ranks %.3f N' % (k, sum(r1s) / k, sum(r2s) / k))
-print('paired difference (2 ranks - 1 rank): %+.2f %% +- %.2f %% (95 %% CI), sd of one pair %.2f %%'
-      % (100 * mean, 100 * ci, 100 * sd))
+print('pairs: %d; ensemble mean A (%s) %.3f N, B (%s) %.3f N' % (k, la, sum(ras) / k, lb, sum(rbs) / k))
+print('paired difference (B - A): %+.2f %% +- %.2f %% (95 %% CI), sd of one pair %.2f %%' % (100 * mean, 100 * ci, 100 * sd))
 lo, hi = mean - ci, mean + ci
 if -0.01 < lo and hi < 0.01:
     print('WITHIN 1 %%: the 95 %% CI [%+.2f, %+.2f] %% lies inside [-1, +1] %%' % (100 * lo, 100 * hi))
