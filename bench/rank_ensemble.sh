@@ -6,15 +6,16 @@
 # so the pair's difference holds the chaotic scatter and the effect of the change, not the packing's. The result is
 # the mean of the paired relative differences (B - A) / mean with its 95 % confidence interval (Student t): B makes
 # no difference beyond 1 % when that interval lies inside [-1 %, +1 %].
-#   bash bench/rank_ensemble.sh [N_SEEDS (10)] [OUT (runs/rank-ensemble)]
+#   bash bench/rank_ensemble.sh [N_SEEDS (12)] [OUT (runs/rank-ensemble)]
 # env: CASE (cases/jbc_quick), SIDE_A ("1"), SIDE_B ("2"): a side is NP[:section.key=value,...] (MPI ranks, then
 # edits of the case, as in bench/speed_vs_error.sh), e.g. SIDE_B="1:run.timestep_s=2.0e-4" for the dt knob.
-# 1-rank runs go two at a time (JOBS, one per core), others one at a time: ~4-5 min per quick-case pair on a quiet
+# Part of make bench (~1 h on a fresh machine; re-prints once the runs exist). 1-rank runs go two at a time (JOBS,
+# one per core), others one at a time: ~4-5 min per quick-case pair on a quiet
 # 2-core machine. Finished runs are kept and skipped, so the script can be stopped and started again, and N raised
 # later. BRASH_BIN (default build/bin) holds the executables.
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
-n_seeds="${1:-10}"
+n_seeds="${1:-12}"
 out="${2:-$here/runs/rank-ensemble}"
 bin="${BRASH_BIN:-$here/build/bin}"
 case_src="$(cd "${CASE:-$here/cases/jbc_quick}" && pwd)"
