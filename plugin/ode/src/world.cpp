@@ -113,6 +113,8 @@ void World::add_wall_box(const Vec3& c, const Vec3& size) {
   dGeomSetCollideBits(g, kSphereBit);
   dGeomSetData(g, reinterpret_cast<void*>(static_cast<std::uintptr_t>(kWallTag + walls_.size())));
   walls_.push_back(g);
+  wall_boxes_.emplace_back();  // walls never move: their AABB once, for the grid broad phase
+  dGeomGetAABB(g, wall_boxes_.back().data());
 }
 
 void World::set_hull(std::vector<double> vertices, std::vector<dTriIndex> triangles, const Vec3& position,
@@ -378,26 +380,25 @@ void World::collide_grid() {
   const auto collide_spheres = [this](std::uint32_t i, std::uint32_t j) {
     collide_tagged(spheres_[i].geom, std::size_t(i) + 1, spheres_[j].geom, std::size_t(j) + 1);
   };
-  // Sphere pairs: each cell with itself and with 4 of its 8 neighbours (the other 4 see it from their side).
+  // Sphere pairs: each cell with itself (the spheres after this one) and with 4 of its 8 neighbours (the other 4
+  // see it from their side).
   for (std::size_t ix = 0; ix < nx; ++ix) {
     for (std::size_t iy = 0; iy < ny; ++iy) {
       const std::size_t c = ix * ny + iy;
       const std::uint32_t b0 = cell_start_[c], b1 = cell_start_[c + 1];
       if (b0 == b1) continue;
-      std::array<std::size_t, 4> nb{};
-      std::size_t m = 0;
-      if (iy + 1 < ny) nb[m++] = c + 1;
+      std::array<std::size_t, 5> cells{c};
+      std::size_t m = 1;
+      if (iy + 1 < ny) cells[m++] = c + 1;
       if (ix + 1 < nx) {
-        if (iy > 0) nb[m++] = c + ny - 1;
-        nb[m++] = c + ny;
-        if (iy + 1 < ny) nb[m++] = c + ny + 1;
+        if (iy > 0) cells[m++] = c + ny - 1;
+        cells[m++] = c + ny;
+        if (iy + 1 < ny) cells[m++] = c + ny + 1;
       }
       for (std::uint32_t i = b0; i < b1; ++i) {
         const GridItem& a = grid_items_[i];
-        for (std::uint32_t j = i + 1; j < b1; ++j)
-          if (overlap(a, grid_items_[j])) collide_spheres(a.sphere, grid_items_[j].sphere);
         for (std::size_t q = 0; q < m; ++q)
-          for (std::uint32_t j = cell_start_[nb[q]]; j < cell_start_[nb[q] + 1]; ++j)
+          for (std::uint32_t j = q == 0 ? i + 1 : cell_start_[cells[q]]; j < cell_start_[cells[q] + 1]; ++j)
             if (overlap(a, grid_items_[j])) collide_spheres(a.sphere, grid_items_[j].sphere);
       }
     }
@@ -409,8 +410,6 @@ void World::collide_grid() {
   };
   dReal hull_box[6];
   if (hull_geom_) dGeomGetAABB(hull_geom_, hull_box);
-  wall_boxes_.resize(walls_.size());
-  for (std::size_t w = 0; w < walls_.size(); ++w) dGeomGetAABB(walls_[w], wall_boxes_[w].data());
   for (const auto& a : grid_items_) {
     const dGeomID ga = spheres_[a.sphere].geom;
     if (hull_geom_ && touches(a, hull_box)) collide_tagged(ga, std::size_t(a.sphere) + 1, hull_geom_, 0);

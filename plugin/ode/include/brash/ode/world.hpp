@@ -220,7 +220,7 @@ class World {
   bool broad_spheres_stale_ = true;
   std::vector<GridItem> grid_unsorted_, grid_items_;
   std::vector<std::uint32_t> cell_start_, cell_fill_;
-  std::vector<std::array<dReal, 6>> wall_boxes_;
+  std::vector<std::array<dReal, 6>> wall_boxes_;  // AABB of walls_[w], taken once in add_wall_box
   Vec3 hull_force_N_ = Vec3::Zero();
   std::size_t hull_contacts_ = 0;
   std::size_t contacts_this_step_ = 0;
