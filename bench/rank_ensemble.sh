@@ -34,13 +34,14 @@ side_name() {
 seed_case() { echo "$out/cases/$(basename "$case_src")_s$1"; }
 complete() { [ -f "$1/report.json" ] && grep -q '"status": "complete"' "$1/report.json"; }
 run_one() {  # seed, side
-  local run="$out/s$1-$(side_name "$2")" case_dir edits
+  local name; name="$(side_name "$2")"
+  local run="$out/s$1-$name" case_dir edits
   complete "$run" && return 0
   case_dir="$(seed_case "$1")"; edits="$(edits_of "$2")"
   if [ -n "$edits" ]; then  # the seed's case with the side's edits, on the seed's packing
-    mkdir -p "$case_dir-$(side_name "$2")"
-    python3 "$here/bench/case_edit.py" "$case_dir/case.yaml" "$case_dir-$(side_name "$2")/case.yaml" "$edits" "$case_dir"
-    case_dir="$case_dir-$(side_name "$2")"
+    mkdir -p "$case_dir-$name"
+    python3 "$here/bench/case_edit.py" "$case_dir/case.yaml" "$case_dir-$name/case.yaml" "$edits" "$case_dir"
+    case_dir="$case_dir-$name"
   fi
   rm -rf "$run"
   echo "== seed $1, $2 -> $run ($(date +%H:%M:%S))"
