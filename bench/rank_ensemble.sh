@@ -8,7 +8,9 @@
 # no difference beyond 1 % when that interval lies inside [-1 %, +1 %].
 #   bash bench/rank_ensemble.sh [N_SEEDS (12)] [OUT (runs/rank-ensemble)]
 # env: CASE (cases/jbc_quick), SIDE_A ("1"), SIDE_B ("2"): a side is NP[:section.key=value,...] (MPI ranks, then
-# edits of the case, as in bench/speed_vs_error.sh), e.g. SIDE_B="1:run.timestep_s=2.0e-4" for the dt knob.
+# edits of the case, as in bench/speed_vs_error.sh), e.g. SIDE_B="1:run.timestep_s=2.0e-4" for the dt knob;
+# TOL_PCT (1): the tolerance the CI is tested against (issue 9 asks 2 % for a knob). The wall-time ratio A / B of the
+# summed runs is printed too (a knob's speed-up; only as fair as the load was alike when the two sides ran).
 # Part of make bench (~1 h on a fresh machine; re-prints once the runs exist). 1-rank runs go two at a time (JOBS,
 # one per core), others one at a time: ~4-5 min per quick-case pair on a quiet
 # 2-core machine. Finished runs are kept and skipped, so the script can be stopped and started again, and N raised
@@ -69,15 +71,21 @@ for side in "${sides[@]}"; do
   wait
 done
 /usr/bin/python3 - "$out" "$n_seeds" "$(basename "$case_src")" "${sides[0]}" "${sides[1]}" \
-  "$(side_name "${sides[0]}")" "$(side_name "${sides[1]}")" <<'EOF'
+  "$(side_name "${sides[0]}")" "$(side_name "${sides[1]}")" "${TOL_PCT:-1}" <<'EOF'
 import json, math, os, sys
-out, n, case, side_a, side_b, name_a, name_b = sys.argv[1], int(sys.argv[2]), *sys.argv[3:]
+out, n, case, side_a, side_b, name_a, name_b, tol_pct = sys.argv[1], int(sys.argv[2]), *sys.argv[3:]
+tol = float(tol_pct) / 100
 # Student t 97.5 % quantiles for 1..30 degrees of freedom (then ~1.96)
 T = [12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228, 2.201, 2.179, 2.160, 2.145, 2.131,
      2.120, 2.110, 2.101, 2.093, 2.086, 2.080, 2.074, 2.069, 2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042]
 def label(side):
     np_, _, edits = side.partition(':')
     return '%s rank%s%s' % (np_, '' if np_ == '1' else 's', ', ' + edits if edits else '')
+def wall_s(run):
+    try:
+        return float(json.load(open(os.path.join(out, run, 'meta.json')))['wall_time_s'])
+    except (OSError, ValueError, KeyError, TypeError):
+        return float('nan')
 def mean_N(run):
     try:
         r = json.load(open(os.path.join(out, run, 'report.json')))
@@ -90,12 +98,13 @@ la, lb = label(side_a), label(side_b)
 print('== %s, one packing seed per pair, mean resistance over its window, model scale' % case)
 print('| seed | A: %s [N] | B: %s [N] | (B - A) / mean |' % (la, lb))
 print('|---|---|---|---|')
-d, ras, rbs = [], [], []
+d, ras, rbs, was, wbs = [], [], [], [], []
 for s in range(1, n + 1):
     a, b = mean_N('s%d-%s' % (s, name_a)), mean_N('s%d-%s' % (s, name_b))
     if a is None or b is None:
         print('| %d | %s | %s | (incomplete) |' % (s, a or '-', b or '-')); continue
     d.append((b - a) / (0.5 * (a + b))); ras.append(a); rbs.append(b)
+    was.append(wall_s('s%d-%s' % (s, name_a))); wbs.append(wall_s('s%d-%s' % (s, name_b)))
     print('| %d | %.3f | %.3f | %+.2f %% |' % (s, a, b, 100 * d[-1]))
 k = len(d)
 if k < 2:
@@ -105,11 +114,13 @@ sd = math.sqrt(sum((x - mean) ** 2 for x in d) / (k - 1))
 ci = (T[k - 2] if k - 1 <= len(T) else 1.96) * sd / math.sqrt(k)
 print('pairs: %d; ensemble mean A (%s) %.3f N, B (%s) %.3f N' % (k, la, sum(ras) / k, lb, sum(rbs) / k))
 print('paired difference (B - A): %+.2f %% +- %.2f %% (95 %% CI), sd of one pair %.2f %%' % (100 * mean, 100 * ci, 100 * sd))
+print('wall time: A %.0f s, B %.0f s in all; speed-up of B over A %.2fx' % (sum(was), sum(wbs), sum(was) / sum(wbs)))
 lo, hi = mean - ci, mean + ci
-if -0.01 < lo and hi < 0.01:
-    print('WITHIN 1 %%: the 95 %% CI [%+.2f, %+.2f] %% lies inside [-1, +1] %%' % (100 * lo, 100 * hi))
+t = '%g' % (100 * tol)
+if -tol < lo and hi < tol:
+    print('WITHIN %s %%: the 95 %% CI [%+.2f, %+.2f] %% lies inside [-%s, +%s] %%' % (t, 100 * lo, 100 * hi, t, t))
 else:
-    need = math.ceil((1.96 * sd / max(1e-9, 0.01 - abs(mean))) ** 2) if abs(mean) < 0.01 else None
-    print('NOT SHOWN: the 95 %% CI [%+.2f, %+.2f] %% is not inside [-1, +1] %%%s' % (
-        100 * lo, 100 * hi, '' if need is None else '; about %d pairs would resolve it at this scatter' % need))
+    need = math.ceil((1.96 * sd / max(1e-9, tol - abs(mean))) ** 2) if abs(mean) < tol else None
+    print('NOT SHOWN: the 95 %% CI [%+.2f, %+.2f] %% is not inside [-%s, +%s] %%%s' % (
+        100 * lo, 100 * hi, t, t, '' if need is None else '; about %d pairs would resolve it at this scatter' % need))
 EOF
