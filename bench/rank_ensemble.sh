@@ -116,6 +116,11 @@ print('pairs: %d; ensemble mean A (%s) %.3f N, B (%s) %.3f N' % (k, la, sum(ras)
 print('paired difference (B - A): %+.2f %% +- %.2f %% (95 %% CI), sd of one pair %.2f %%' % (100 * mean, 100 * ci, 100 * sd))
 print('wall time: A %.0f s, B %.0f s in all; speed-up of B over A %.2fx' % (sum(was), sum(wbs), sum(was) / sum(wbs)))
 lo, hi = mean - ci, mean + ci
+# machine-readable summary, OUT/ensemble-<A>-vs-<B>.json, read by bench/pareto_plot.sh
+with open(os.path.join(out, 'ensemble-%s-vs-%s.json' % (name_a, name_b)), 'w') as f:
+    json.dump({'case': case, 'side_a': side_a, 'side_b': side_b, 'pairs': k, 'mean_a_N': sum(ras) / k,
+               'mean_b_N': sum(rbs) / k, 'diff_rel': mean, 'ci95_rel': ci, 'sd_rel': sd, 'wall_a_s': sum(was),
+               'wall_b_s': sum(wbs), 'speedup': sum(was) / sum(wbs)}, f, indent=1)
 t = '%g' % (100 * tol)
 if -tol < lo and hi < tol:
     print('WITHIN %s %%: the 95 %% CI [%+.2f, %+.2f] %% lies inside [-%s, +%s] %%' % (t, 100 * lo, 100 * hi, t, t))
