@@ -413,7 +413,7 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
   {  // speedups (docs/performance.md)
     const auto s = r.section(root, "speedups",
                              {"farfield", "farfield_ahead_m", "farfield_behind_m", "farfield_every_steps",
-                              "symmetry_y", "neighbor_skin_d", "early_stop_rel_ci", "early_stop_trend_check"});
+                              "farfield_wake_force_weight", "farfield_wake_speed_m_s", "symmetry_y", "neighbor_skin_d", "early_stop_rel_ci", "early_stop_trend_check"});
     r.boolean(s, "speedups", "farfield", c.speedups.farfield);
     r.num(s, "speedups", "farfield_ahead_m", c.speedups.farfield_ahead_m, non_negative, ">= 0");
     r.num(s, "speedups", "farfield_behind_m", c.speedups.farfield_behind_m, non_negative, ">= 0");
@@ -421,6 +421,9 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
     r.num(s, "speedups", "farfield_every_steps", every,
           [](double n) { return n >= 1 && n <= 1e6 && n == std::floor(n); }, "an integer in [1, 1000000]");
     c.speedups.farfield_every_steps = static_cast<int>(every);
+    r.num(s, "speedups", "farfield_wake_force_weight", c.speedups.farfield_wake_force_weight,
+          [](double f) { return f >= 0 && f <= 1; }, "in [0, 1] (fraction of a piece's weight; 0 = the window alone)");
+    r.num(s, "speedups", "farfield_wake_speed_m_s", c.speedups.farfield_wake_speed_m_s, non_negative, ">= 0");
     r.boolean(s, "speedups", "symmetry_y", c.speedups.symmetry_y);
     r.num(s, "speedups", "neighbor_skin_d", c.speedups.neighbor_skin_d,
           [](double k) { return k > 0 && k <= 2; }, "in (0, 2]");
@@ -566,6 +569,8 @@ std::string dump_case_yaml(const Case& c) {
   line("  ", "farfield_ahead_m", num(c.speedups.farfield_ahead_m));
   line("  ", "farfield_behind_m", num(c.speedups.farfield_behind_m));
   line("  ", "farfield_every_steps", fmt::format("{}", c.speedups.farfield_every_steps));
+  line("  ", "farfield_wake_force_weight", num(c.speedups.farfield_wake_force_weight));
+  line("  ", "farfield_wake_speed_m_s", num(c.speedups.farfield_wake_speed_m_s));
   line("  ", "symmetry_y", c.speedups.symmetry_y ? "true" : "false");
   line("  ", "neighbor_skin_d", num(c.speedups.neighbor_skin_d));
   line("  ", "early_stop_rel_ci", num(c.speedups.early_stop_rel_ci));

@@ -3,6 +3,7 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -10,7 +11,9 @@
 
 #include "atom.h"
 #include "error.h"
+#include "force.h"
 #include "group.h"
+#include "neighbor.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -57,13 +60,19 @@ FixBrashFarfield::FixBrashFarfield(LAMMPS* lmp, int narg, char** arg) : Fix(lmp,
       bow_offset_ = to_number(error, key, val), have_bow_ = true;
     } else if (key == "stern_offset") {
       stern_offset_ = to_number(error, key, val), have_stern_ = true;
+    } else if (key == "wake_speed") {
+      wake_speed_ = to_number(error, key, val);
+      if (wake_speed_ < 0) error->all(FLERR, "fix brash/farfield: 'wake_speed' must be >= 0");
+    } else if (key == "wake_force") {
+      wake_force_ = to_number(error, key, val);
+      if (wake_force_ < 0) error->all(FLERR, "fix brash/farfield: 'wake_force' must be >= 0");
     } else if (key == "active") {
       active_name_ = val;
     } else if (key == "idle") {
       idle_name_ = val;
     } else {
       const std::string msg = "fix brash/farfield: unknown keyword '" + key +
-                              "' (expected every, ahead, behind, hull_x0, speed, bow_offset, stern_offset, active, idle)";
+                              "' (expected every, ahead, behind, hull_x0, speed, bow_offset, stern_offset, wake_speed, wake_force, active, idle)";
       error->all(FLERR, msg.c_str());
     }
     iarg += 2;
@@ -93,29 +102,59 @@ FixBrashFarfield::FixBrashFarfield(LAMMPS* lmp, int narg, char** arg) : Fix(lmp,
   extvector = 0;
 }
 
-int FixBrashFarfield::setmask() { return PRE_EXCHANGE; }
+int FixBrashFarfield::setmask() { return wake_force_ > 0 ? (PRE_EXCHANGE | END_OF_STEP) : PRE_EXCHANGE; }
 
 void FixBrashFarfield::init() {
   // the group bits were looked up at creation; a deleted group would leave stale bits
   if (group->find(active_name_.c_str()) < 0 || group->find(idle_name_.c_str()) < 0)
     error->all(FLERR, "fix brash/farfield: the active or idle group was deleted");
+  if (wake_speed_ > 0 && wake_force_ <= 0)
+    error->all(FLERR, "fix brash/farfield: wake_speed needs wake_force > 0 (the pieces the push has reached)");
+  if (wake_force_ > 0 && force->newton_pair)
+    error->all(FLERR, "fix brash/farfield: wake_force needs 'newton off' (the force on a local atom complete on its rank)");
 }
 
-// Before the first neighbour build of a run: membership for the current position of the hull.
+// Before the first neighbour build of a run: membership for the current position of the hull (speed test only).
 void FixBrashFarfield::setup_pre_exchange() {
-  update_membership();
-  next_reneighbor = update->ntimestep + every_;
+  update_membership(true);
+  next_update_ = update->ntimestep + every_;
+  next_reneighbor = next_update_;
 }
 
-// Called only on re-neighbour steps (before exchange and borders); updates when a period has passed.
-// The forced re-neighbour at next_reneighbor makes the update happen no later than every N steps.
+// Called only on re-neighbour steps (before exchange and borders): updates the membership when a period has
+// passed. The forced re-neighbour at next_reneighbor makes the update happen no later than every N steps.
 void FixBrashFarfield::pre_exchange() {
-  if (update->ntimestep < next_reneighbor) return;
-  update_membership();
-  next_reneighbor = update->ntimestep + every_;
+  if (update->ntimestep >= next_update_) {
+    update_membership(false);
+    next_update_ = update->ntimestep + every_;
+  }
+  next_reneighbor = next_update_;
 }
 
-void FixBrashFarfield::update_membership() {
+// An idle piece pushed beyond F (horizontal force: active neighbours and walls) wakes now: integrated from the
+// next step on. Its pairs with idle neighbours enter the neighbour list at the next build, forced within
+// kWakeBuildSteps (ghost copies get the new mask then too); every rank takes the same decision (Allreduce).
+void FixBrashFarfield::end_of_step() {
+  double** f = atom->f;
+  int* mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const double f2 = wake_force_ * wake_force_;
+  int woke = 0;
+  for (int i = 0; i < nlocal; i++)
+    if ((mask[i] & idle_bit_) && f[i][0] * f[i][0] + f[i][1] * f[i][1] > f2) {
+      mask[i] = (mask[i] | active_bit_) & ~idle_bit_;
+      woke = 1;
+    }
+  int any = 0;
+  MPI_Allreduce(&woke, &any, 1, MPI_INT, MPI_MAX, world);
+  if (any) {
+    const bigint step = update->ntimestep;
+    const bigint soon = std::max(step + 1, neighbor->lastcall + kWakeBuildSteps);
+    next_reneighbor = std::min(next_reneighbor, soon);
+  }
+}
+
+void FixBrashFarfield::update_membership(bool setup) {
   const double t = static_cast<double>(update->ntimestep) * update->dt;
   const double bow = hull_x0_ + bow_offset_ + speed_ * t, stern = hull_x0_ + stern_offset_ + speed_ * t;
   const double x_hi = bow + ahead_, x_lo = stern - behind_;
@@ -124,10 +163,22 @@ void FixBrashFarfield::update_membership() {
   double** omega = atom->omega;
   int* mask = atom->mask;
   const int nlocal = atom->nlocal;
+  const double v2 = wake_speed_ * wake_speed_;
   double local[2] = {0, 0};  // idle, changed
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    const bool idle = x[i][0] > x_hi || x[i][0] < x_lo;
+    const bool ahead = x[i][0] > x_hi, behind = x[i][0] < x_lo;
+    const bool moving = v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2] > v2;
+    bool idle = ahead || behind;
+    if (idle && wake_force_ > 0) {
+      // Ahead of the bow, pieces only wake (pushed, end_of_step): once the disturbance has reached a piece it
+      // stays active (re-freezing a slow piece of a loaded bed would jam it again). At setup (a new run, or a
+      // resumed one) a piece at rest is idle. Behind the stern, a piece is idle once at rest.
+      if (ahead && !setup)
+        idle = (mask[i] & idle_bit_) != 0;
+      else
+        idle = !moving;
+    }
     const bool was_idle = (mask[i] & idle_bit_) != 0;
     if (idle) {
       mask[i] = (mask[i] | idle_bit_) & ~active_bit_;

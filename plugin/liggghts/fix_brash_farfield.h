@@ -1,7 +1,7 @@
 /* fix brash/farfield: idle far-field ice (docs/performance.md, switch speedups.farfield).
 
    fix ID group-ID brash/farfield every N ahead A behind B hull_x0 X0 speed U bow_offset LB stern_offset LS
-                                  [active GROUP] [idle GROUP]
+                                  [wake_speed V] [active GROUP] [idle GROUP]
 
    Bow at x = X0 + LB + U t, stern at x = X0 + LS + U t (t = step * dt, the hull moving at U along +x from
    X0 at step 0, as fix move/mesh linear does). Every N steps, atoms of group-ID more than A ahead of the bow
@@ -12,7 +12,17 @@
    idle`; active-idle contacts are still computed (an idle piece is an immovable neighbour until the ship
    comes within A of it).
 
-   Hooks: PRE_EXCHANGE. The mask bits are changed right before the exchange/borders of a neighbour-list
+   wake_force F (N), wake_speed V (m/s) (default 0 = off: the window alone). The window alone is not enough
+   when the ship's push travels further than A through the ice (a packed bed pushed ahead of the bow: an idle
+   wall A ahead of it jams the bed and raises the resistance, +19 % on cases/jbc_quick). With wake_force, an idle
+   piece wakes as soon as the horizontal force on it (from active neighbours and walls: idle pieces get no
+   gravity or fluid force) exceeds F (END_OF_STEP, where f of a local atom is complete with newton off; its pairs
+   with idle neighbours, excluded until then, are in the neighbour list from a build forced within 10 steps,
+   one Allreduce per step tells every rank). Ahead of the bow a woken piece stays active (re-freezing slow pieces
+   of a loaded bed would jam it again); behind the stern a piece goes idle once slower than V. At setup (new or
+   resumed run) a piece outside the window is idle when slower than V. The idle ice is then the ice the
+   disturbance has not reached (tests/liggghts/test_farfield.cpp: a pushed chain moves as without the fix).
+   Hooks: PRE_EXCHANGE (and END_OF_STEP with wake_force). The mask bits are changed right before the exchange/borders of a neighbour-list
    build, so ghost copies carry the new bits and the same build applies the exclusion; a re-neighbour is
    forced every N steps (next_reneighbor). Not a POST_FORCE fix (fix icefluid stays last).
    Global vector (f_ID[1..2]): number of idle atoms, number of membership changes at the last update.
@@ -33,10 +43,14 @@ class FixBrashFarfield : public LAMMPS_NS::Fix {
   void init() override;
   void setup_pre_exchange() override;
   void pre_exchange() override;
+  void end_of_step() override;
   double compute_vector(int i) override;
 
  private:
-  void update_membership();
+  void update_membership(bool setup);
+
+  static constexpr int kWakeBuildSteps = 10;  // a woken piece meets its idle neighbours within this many steps
+  LAMMPS_NS::bigint next_update_ = 0;
 
   int every_ = 100;
   double ahead_ = 1.0, behind_ = 1.0, hull_x0_ = 0.0, speed_ = 0.0, bow_offset_ = 0.0, stern_offset_ = 0.0;
@@ -44,6 +58,8 @@ class FixBrashFarfield : public LAMMPS_NS::Fix {
   std::string active_name_ = "active", idle_name_ = "idle";
   bool have_ahead_ = false, have_behind_ = false, have_x0_ = false, have_speed_ = false, have_bow_ = false,
        have_stern_ = false;
+  double wake_speed_ = 0;           // m/s; 0: no speed test
+  double wake_force_ = 0;           // N; 0: idle pieces never wake by force
   double n_idle_ = 0, n_changed_ = 0;
 };
 

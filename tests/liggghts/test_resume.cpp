@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -213,5 +215,27 @@ TEST(LiggghtsResume, KilledRunResumesToTheSameResult) {
   const double ra = mean_resistance(a, 0.2), rb = mean_resistance(b, 0.2);
   EXPECT_GT(ra, 2.0);
   EXPECT_NEAR(rb / ra, 1.0, 0.10) << ra << " vs " << rb;
+  fs::remove_all(dir);
+}
+
+TEST(LiggghtsRunner, FarfieldSceneWakesPushedIceUnlessTheWindowAloneIsAsked) {
+  const fs::path dir = brash::test::fresh_dir("farfield_scene");
+  const auto prepare = [&](const std::string& speedups, const std::string& name) {
+    write_small_case(dir / name, "[0.0, 0.6]", "0.01", speedups);
+    const std::string cmd = brash::test::runner_command(dir / name, dir / (name + "_run")) + " --prepare-only > /dev/null";
+    EXPECT_EQ(std::system(cmd.c_str()), 0);
+    return brash::test::read_text(dir / (name + "_run/in.lmp"));
+  };
+  // default wake force: 1e-3 of the mean piece's weight (d 0.035 m, 900 kg/m3: 0.19820 N)
+  const std::string wake = prepare("speedups:\n  farfield: true\n  farfield_ahead_m: 0.3\n", "wake");
+  const auto pos = wake.find(" wake_force ");
+  ASSERT_NE(pos, std::string::npos) << wake;
+  EXPECT_NEAR(std::stod(wake.substr(pos + 12)), 1e-3 * 900 * M_PI / 6 * std::pow(0.035, 3) * 9.81, 1e-12);
+  EXPECT_NE(wake.find(" wake_speed 0.005 "), std::string::npos);
+  EXPECT_NE(wake.find("cpu f_farfield[1]\n"), std::string::npos) << "the idle count is in the log";
+  const std::string window =
+      prepare("speedups:\n  farfield: true\n  farfield_ahead_m: 0.3\n  farfield_wake_force_weight: 0\n", "window");
+  EXPECT_NE(window.find("fix farfield all brash/farfield"), std::string::npos);
+  EXPECT_EQ(window.find("wake_force"), std::string::npos);
   fs::remove_all(dir);
 }

@@ -132,6 +132,11 @@ struct SpeedupSpec {
   double farfield_ahead_m = 1.0;        // idle: more than this ahead of the bow
   double farfield_behind_m = 1.0;       // idle: more than this behind the stern
   int farfield_every_steps = 100;       // membership update period [steps]
+  double farfield_wake_force_weight = 1e-3;  // an idle piece wakes when the horizontal force on it exceeds this
+                                        // fraction of the mean piece's weight (0 = the window alone: idle ice is
+                                        // an immovable wall; docs/performance.md)
+  double farfield_wake_speed_m_s = 0.005;  // with the wake: behind the stern (and at a run's start) a piece is idle
+                                        // once slower than this
   bool symmetry_y = false;              // half channel y >= 0, frictionless wall at y = 0, forces x 2
   double neighbor_skin_d = 0.2;         // neighbour-list skin in mean sphere diameters
   double early_stop_rel_ci = 0;         // stop once the 95 % CI of the window mean is below this fraction of

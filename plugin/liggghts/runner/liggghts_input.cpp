@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+
 #include <fmt/format.h>
 
 #include "brash/guard.hpp"
@@ -127,12 +128,19 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
   s += fmt::format("fix sides2 all wall/gran model hertz tangential history primitive type 3 yplane {:.9g}\n",
                    0.5 * c.channel.width_m);
   s += fmt::format("fix mv all move/mesh mesh hull linear {:.9g} 0 0\n", c.ship.speed_m_s);
-  if (sp.farfield)
+  if (sp.farfield) {
+    // the wake force: a fraction of the mean piece's weight (docs/performance.md, "far field")
+    const double d = c.ice.diameter_mean_m;
+    const double weight_N = c.ice.density_kg_m3 * std::numbers::pi / 6.0 * d * d * d * c.water.gravity_m_s2;
+    const double wake_force_N = sp.farfield_wake_force_weight * weight_N;
     s += fmt::format(
         "fix farfield all brash/farfield every {} ahead {:.9g} behind {:.9g} hull_x0 {:.9g} speed {:.9g} "
-        "bow_offset {:.9g} stern_offset {:.9g} active active idle idle\n",
+        "bow_offset {:.9g} stern_offset {:.9g}{} active active idle idle\n",
         sp.farfield_every_steps, sp.farfield_ahead_m, sp.farfield_behind_m, hull_x0, c.ship.speed_m_s,
-        opt.hull_x_max_m, opt.hull_x_min_m);
+        opt.hull_x_max_m, opt.hull_x_min_m,
+        wake_force_N > 0 ? fmt::format(" wake_force {:.9g} wake_speed {:.9g}", wake_force_N, sp.farfield_wake_speed_m_s)
+                         : std::string());
+  }
   s += fmt::format("fix integr {} nve/sphere\n", moving);
   s += fmt::format("fix grav {} gravity {:.9g} vector 0 0 -1\n", moving, c.water.gravity_m_s2);
   s += "fix ts all check/timestep/gran 1000 0.1 0.1\n";
@@ -172,8 +180,9 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
   s += "dump_modify parts pad 10\n";
   if (opt.restart_every_steps > 0)
     s += fmt::format("restart {} restart/a.restart restart/b.restart\n", opt.restart_every_steps);
-  s += fmt::format("thermo_style custom step v_t atoms ke f_hull[1] cpu\nthermo {}\nthermo_modify norm no lost error\n",
-                   thermo_every);
+  // with the far field, the last column is the number of idle pieces (log.txt: how far the disturbance reached)
+  s += fmt::format("thermo_style custom step v_t atoms ke f_hull[1] cpu{}\nthermo {}\nthermo_modify norm no lost error\n",
+                   sp.farfield ? " f_farfield[1]" : "", thermo_every);
   s += fmt::format("run {}{}\n", steps, opt.restart_file.empty() ? "" : " upto");  // upto: to the same end step
   s += "write_restart restart/final.restart\n";
   return s;
