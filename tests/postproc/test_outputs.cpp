@@ -179,3 +179,31 @@ TEST(ContactBand, PieceBelowTheBandIsReported) {
     fs::remove_all(dir);
   }
 }
+
+TEST(FarFieldNote, WindowAloneRunsAreFlagged) {
+  struct Variant {
+    std::string case_extra, meta_extra;
+    bool flagged;
+  };
+  for (const auto& v : {Variant{"speedups:\n  farfield: true\n  farfield_wake_force_weight: 0\n", "", true},
+                        Variant{"speedups:\n  farfield: true\n", "", false},  // the wake rule (default)
+                        Variant{"", R"(, "skips": {"cull": true})", true},    // brash-ode --cull
+                        Variant{"", R"(, "skips": {"cull": false})", false}}) {
+    SCOPED_TRACE(v.case_extra + v.meta_extra);
+    const auto dir = scratch("farfield_note");
+    SyntheticRun r;
+    write_synthetic_run(dir, r);
+    {
+      std::ofstream(dir / "case.yaml", std::ios::app) << v.case_extra;
+    }
+    if (!v.meta_extra.empty()) {
+      std::string meta = brash::post::read_text_file(dir / "meta.json");
+      meta.insert(meta.rfind('}'), v.meta_extra);
+      brash::post::testing::write_text(dir / "meta.json", meta);
+    }
+    ASSERT_EQ(sh(fmt::format("{} {} --no-plots --no-paraview > /dev/null 2>&1", BRASH_POST_EXE, dir.string())), 0);
+    const auto j = nlohmann::json::parse(brash::post::read_text_file(dir / "report.json"));
+    EXPECT_EQ(j["notes"].dump().find("window alone") != std::string::npos, v.flagged) << j["notes"].dump();
+    fs::remove_all(dir);
+  }
+}

@@ -25,6 +25,7 @@ struct PostCase {
   // L_par_m, L_bow_m, A_wf_m2.
   std::map<std::string, double> fsicr_overrides;
   std::optional<double> psi_override_deg;  // otherwise psi = atan(tan phi2 / sin alpha)
+  bool farfield_window_alone = false;  // speedups.farfield with no wake: idle ice was an immovable wall (biased)
 };
 
 PostCase read_post_case(const std::filesystem::path& case_yaml);
