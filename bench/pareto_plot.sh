@@ -50,7 +50,7 @@ base = os.path.basename(stem)
 with open(stem + '.gp', 'w') as f:
     f.write("set terminal pngcairo size 900,600\nset output '%s.png'\nset termoption noenhanced\n" % base)
     f.write("set xlabel 'speed-up over the reference (summed wall time of the ensemble)'\n")
-    f.write("set ylabel 'mean resistance: paired difference to the reference [%]'\nset grid\nset key left bottom\n")
+    f.write("set ylabel 'mean resistance: paired difference to the reference [%]'\nset grid\nset key right center\n")
     f.write("set title 'Run time vs error (%s, paired-seed ensembles; bars: 95 %% CI)'\n" % rows[0][5])
     f.write("set offsets graph 0.1, graph 0.1, graph 0.1, graph 0.1\n")
     f.write("plot %g with lines dt 2 lc 'grey' title '+-%g %%', %g with lines dt 2 lc 'grey' notitle, " % (tol, tol, -tol))
