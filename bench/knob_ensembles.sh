@@ -12,9 +12,9 @@ out="${2:-$here/runs/rank-ensemble}"
 ff="speedups.farfield=true,speedups.farfield_ahead_m=0.3,speedups.farfield_behind_m=1.0,speedups.farfield_every_steps=100"
 declare -A edits=(
   [farfield_window]="$ff,speedups.farfield_wake_force_weight=0"    # the window alone (idle ice = a wall)
-  [farfield]="$ff,speedups.farfield_wake_force_weight=1e-3"        # the paper case's far field (with the wake)
+  [farfield]="$ff,speedups.farfield_wake_force_weight=1e-3"        # the far field with the wake (its default)
   [dt_x2]="run.timestep_s=2.0e-4"                   # 16 % of the Rayleigh time (the paper case's dt is at 18 %)
-  [farfield_dt_x2]="$ff,speedups.farfield_wake_force_weight=1e-3,run.timestep_s=2.0e-4"  # both: the paper defaults
+  [farfield_dt_x2]="$ff,speedups.farfield_wake_force_weight=1e-3,run.timestep_s=2.0e-4"  # both together
   [symmetry_y]="speedups.symmetry_y=true"           # half channel
 )
 for k in ${KNOBS:-farfield_window farfield dt_x2 farfield_dt_x2 symmetry_y}; do

@@ -72,7 +72,8 @@ FixBrashFarfield::FixBrashFarfield(LAMMPS* lmp, int narg, char** arg) : Fix(lmp,
       idle_name_ = val;
     } else {
       const std::string msg = "fix brash/farfield: unknown keyword '" + key +
-                              "' (expected every, ahead, behind, hull_x0, speed, bow_offset, stern_offset, wake_speed, wake_force, active, idle)";
+                              "' (expected every, ahead, behind, hull_x0, speed, bow_offset, stern_offset, "
+                              "wake_speed, wake_force, active, idle)";
       error->all(FLERR, msg.c_str());
     }
     iarg += 2;
@@ -111,7 +112,8 @@ void FixBrashFarfield::init() {
   if (wake_speed_ > 0 && wake_force_ <= 0)
     error->all(FLERR, "fix brash/farfield: wake_speed needs wake_force > 0 (the pieces the push has reached)");
   if (wake_force_ > 0 && force->newton_pair)
-    error->all(FLERR, "fix brash/farfield: wake_force needs 'newton off' (the force on a local atom complete on its rank)");
+    error->all(FLERR,
+               "fix brash/farfield: wake_force needs 'newton off' (the force on a local atom complete on its rank)");
 }
 
 // Before the first neighbour build of a run: membership for the current position of the hull (speed test only).
@@ -168,7 +170,6 @@ void FixBrashFarfield::update_membership(bool setup) {
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     const bool ahead = x[i][0] > x_hi, behind = x[i][0] < x_lo;
-    const bool moving = v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2] > v2;
     bool idle = ahead || behind;
     if (idle && wake_force_ > 0) {
       // Ahead of the bow, pieces only wake (pushed, end_of_step): once the disturbance has reached a piece it
@@ -177,7 +178,7 @@ void FixBrashFarfield::update_membership(bool setup) {
       if (ahead && !setup)
         idle = (mask[i] & idle_bit_) != 0;
       else
-        idle = !moving;
+        idle = v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2] <= v2;
     }
     const bool was_idle = (mask[i] & idle_bit_) != 0;
     if (idle) {

@@ -1,7 +1,7 @@
 /* fix brash/farfield: idle far-field ice (docs/performance.md, switch speedups.farfield).
 
    fix ID group-ID brash/farfield every N ahead A behind B hull_x0 X0 speed U bow_offset LB stern_offset LS
-                                  [wake_speed V] [active GROUP] [idle GROUP]
+                                  [wake_force F [wake_speed V]] [active GROUP] [idle GROUP]
 
    Bow at x = X0 + LB + U t, stern at x = X0 + LS + U t (t = step * dt, the hull moving at U along +x from
    X0 at step 0, as fix move/mesh linear does). Every N steps, atoms of group-ID more than A ahead of the bow
@@ -22,9 +22,10 @@
    of a loaded bed would jam it again); behind the stern a piece goes idle once slower than V. At setup (new or
    resumed run) a piece outside the window is idle when slower than V. The idle ice is then the ice the
    disturbance has not reached (tests/liggghts/test_farfield.cpp: a pushed chain moves as without the fix).
-   Hooks: PRE_EXCHANGE (and END_OF_STEP with wake_force). The mask bits are changed right before the exchange/borders of a neighbour-list
-   build, so ghost copies carry the new bits and the same build applies the exclusion; a re-neighbour is
-   forced every N steps (next_reneighbor). Not a POST_FORCE fix (fix icefluid stays last).
+
+   Hooks: PRE_EXCHANGE (and END_OF_STEP with wake_force). The mask bits are changed right before the
+   exchange/borders of a neighbour-list build, so ghost copies carry the new bits and the same build applies the
+   exclusion; a re-neighbour is forced every N steps (next_reneighbor). Not a POST_FORCE fix (fix icefluid stays last).
    Global vector (f_ID[1..2]): number of idle atoms, number of membership changes at the last update.
 */
 #pragma once

@@ -6,7 +6,6 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <map>
 
 #include "liggghts_runner.h"
@@ -154,7 +153,11 @@ namespace {
 constexpr int kChain = 12;
 constexpr double kWakeSteps = 6000, kChainDt = 1e-4;  // dt well below the contacts' Rayleigh time (~7e-4 s)
 
-std::string chain_scene(double wake_speed, int ranks) {
+// NoFix: every piece active (the reference); WindowAlone: the fix without a wake; Wake: wake_force 1e-4 N, wake_speed
+// 0.001 m/s.
+enum class Chain { NoFix, WindowAlone, Wake };
+
+std::string chain_scene(Chain mode, int ranks) {
   std::string s = box_header(0.5, ranks);
   for (int k = 0; k < kChain; ++k) s += fmt::format("create_atoms 1 single {} 0 0 units box\n", 0.01 + kD * k);
   s += "create_atoms 1 single 0.4 0.3 0 units box\ncreate_atoms 1 single 0.4 -0.3 0 units box\n";
@@ -168,39 +171,35 @@ neighbor 0.002 bin
 neigh_modify delay 0 exclude group idle idle
 {contacts}
 timestep {dt}
-fix ff all brash/farfield every 100 ahead 0.035 behind 1 hull_x0 0 speed 0 bow_offset 0 stern_offset 0{wake}
-fix integr active nve/sphere
+{ff}fix integr active nve/sphere
 fix push pusher addforce 2e-3 0 0
 dump d all custom {steps} dump.*.txt id x y z vx vy vz
 dump_modify d sort id
-thermo_style custom step atoms f_ff[1] f_ff[2]
+thermo_style custom step atoms{ff_thermo}
 thermo 100
 run {steps}
 )",
                    fmt::arg("d", kD), fmt::arg("mover", kChain + 2), fmt::arg("dt", kChainDt),
                    fmt::arg("steps", static_cast<int>(kWakeSteps)),
                    fmt::arg("contacts", brash::test::ice_contact_model("0.5")),
-                   fmt::arg("wake", wake_speed > 0 ? fmt::format(" wake_speed {} wake_force 1e-4", wake_speed) : ""));
+                   fmt::arg("ff", mode == Chain::NoFix ? ""
+                                  : "fix ff all brash/farfield every 100 ahead 0.035 behind 1 hull_x0 0 speed 0 "
+                                    "bow_offset 0 stern_offset 0" +
+                                        std::string(mode == Chain::Wake ? " wake_speed 0.001 wake_force 1e-4" : "") +
+                                        "\n"),
+                   fmt::arg("ff_thermo", mode == Chain::NoFix ? "" : " f_ff[1] f_ff[2]"));
   return s;
 }
 
-// wake_speed < 0: the scene without the fix (every piece active), the reference
-std::map<int, Atom> run_chain(double wake_speed, int ranks, const std::string& name) {
+std::map<int, Atom> run_chain(Chain mode, int ranks, const std::string& name) {
   const auto dir = fresh_dir(name);
-  std::string in = chain_scene(std::max(0.0, wake_speed), ranks);
-  if (wake_speed < 0) {
-    const auto pos = in.find("fix ff all");
-    in.erase(pos, in.find('\n', pos) + 1 - pos);
-    const auto th = in.find(" f_ff[1] f_ff[2]");
-    in.erase(th, 16);
-  }
-  EXPECT_EQ(run_liggghts(dir, in, ranks), 0) << read_text(dir / "screen_in.lmp.txt");
+  EXPECT_EQ(run_liggghts(dir, chain_scene(mode, ranks), ranks), 0) << read_text(dir / "screen_in.lmp.txt");
   return read_dump(dir / fmt::format("dump.{}.txt", static_cast<int>(kWakeSteps)));
 }
 }  // namespace
 
 TEST(LiggghtsFarfield, WindowAloneMakesAnIdleWall) {
-  const auto end = run_chain(0, 1, "farfield_chain_window");
+  const auto end = run_chain(Chain::WindowAlone, 1, "farfield_chain_window");
   ASSERT_EQ(end.size(), static_cast<std::size_t>(kChain + 2));
   for (int id = 3; id <= kChain; ++id)  // idle from the start: never moved
     EXPECT_DOUBLE_EQ(end.at(id).x, 0.01 + kD * (id - 1)) << "atom " << id;
@@ -211,7 +210,7 @@ TEST(LiggghtsFarfield, WakeForceLetsThePushTravelOneAndTwoRanks) {
   const double t_end = kWakeSteps * kChainDt;
   std::map<int, Atom> ends[2];
   for (int ranks : {1, 2}) {
-    const auto& end = ends[ranks - 1] = run_chain(0.001, ranks, fmt::format("farfield_chain_wake{}", ranks));
+    const auto& end = ends[ranks - 1] = run_chain(Chain::Wake, ranks, fmt::format("farfield_chain_wake{}", ranks));
     ASSERT_EQ(end.size(), static_cast<std::size_t>(kChain + 2));
     for (int id = 2; id <= kChain; ++id)
       EXPECT_GT(end.at(id).x, 0.01 + kD * (id - 1) + 1e-3) << "atom " << id << " on " << ranks << " rank(s)";
@@ -221,7 +220,7 @@ TEST(LiggghtsFarfield, WakeForceLetsThePushTravelOneAndTwoRanks) {
   // the same membership on 1 and 2 ranks (the chain crosses the rank boundary at x = 0.2): same trajectory
   for (const auto& [id, a] : ends[0]) EXPECT_NEAR(a.x, ends[1].at(id).x, 1e-9) << "atom " << id;
   // and the chain's push as without the fix (observed within 0.13 %; the window alone: not at all)
-  const auto ref = run_chain(-1, 1, "farfield_chain_nofix");
+  const auto ref = run_chain(Chain::NoFix, 1, "farfield_chain_nofix");
   for (int id = 1; id <= kChain; ++id) {
     const double x0 = 0.01 + kD * (id - 1), moved_ref = ref.at(id).x - x0, moved = ends[0].at(id).x - x0;
     EXPECT_GT(moved_ref, 1e-3);
@@ -231,7 +230,7 @@ TEST(LiggghtsFarfield, WakeForceLetsThePushTravelOneAndTwoRanks) {
 
 TEST(LiggghtsFarfield, WakeSpeedMustNotBeNegative) {
   const auto dir = fresh_dir("farfield_wake_bad");
-  std::string in = chain_scene(0.001, 1);
+  std::string in = chain_scene(Chain::Wake, 1);
   const auto pos = in.find("wake_speed 0.001");
   in.replace(pos, 16, "wake_speed -1");
   EXPECT_NE(run_liggghts(dir, in), 0);
