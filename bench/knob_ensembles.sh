@@ -16,8 +16,12 @@ declare -A edits=(
   [dt_x2]="run.timestep_s=2.0e-4"                   # 16 % of the Rayleigh time (the paper case's dt is at 18 %)
   [farfield_dt_x2]="$ff,speedups.farfield_wake_force_weight=1e-3,run.timestep_s=2.0e-4"  # both together
   [symmetry_y]="speedups.symmetry_y=true"           # half channel
+  # softer contacts with the step kept at 16 % of their (longer) Rayleigh time, t_R ~ E^-1/2:
+  [soft_E_div4_dt_x4]="contact.youngs_modulus_pa=1.25e6,run.timestep_s=4.0e-4"
+  [soft_E_div16_dt_x8]="contact.youngs_modulus_pa=3.125e5,run.timestep_s=8.0e-4"   # the paper case's default
+  [soft_E_div64_dt_x16]="contact.youngs_modulus_pa=7.8125e4,run.timestep_s=1.6e-3"
 )
-for k in ${KNOBS:-farfield_window farfield dt_x2 farfield_dt_x2 symmetry_y}; do
+for k in ${KNOBS:-farfield_window farfield dt_x2 farfield_dt_x2 symmetry_y soft_E_div4_dt_x4 soft_E_div16_dt_x8 soft_E_div64_dt_x16}; do
   [ -n "${edits[$k]:-}" ] || { echo "knob_ensembles: unknown knob '$k' (${!edits[*]})" >&2; exit 2; }
   echo "##### knob $k: ${edits[$k]}"
   SIDE_A=1 SIDE_B="1:${edits[$k]}" TOL_PCT=2 bash "$here/bench/rank_ensemble.sh" "$n_seeds" "$out"
