@@ -8,7 +8,8 @@
 # no difference beyond 1 % when that interval lies inside [-1 %, +1 %].
 #   bash bench/rank_ensemble.sh [N_SEEDS (12)] [OUT (runs/rank-ensemble)]
 # env: CASE (cases/jbc_quick), SIDE_A ("1"), SIDE_B ("2"): a side is NP[:section.key=value,...] (MPI ranks, then
-# edits of the case, as in bench/speed_vs_error.sh), e.g. SIDE_B="1:run.timestep_s=2.0e-4" for the dt knob;
+# edits of the case, as in bench/speed_vs_error.sh), e.g. SIDE_B="1:run.timestep_s=2.0e-4" for the dt knob; NP
+# `ode` or `ode@DT` runs the side on brash-ode instead (at its default step, or `--dt DT`), then brash-post;
 # TOL_PCT (1): the tolerance the CI is tested against (issue 9 asks 2 % for a knob). The wall-time ratio A / B of the
 # summed runs is printed too (a knob's speed-up; only as fair as the load was alike when the two sides ran).
 # Part of make bench (~1 h on a fresh machine; re-prints once the runs exist). 1-rank runs go two at a time (JOBS,
@@ -22,17 +23,20 @@ out="${2:-$here/runs/rank-ensemble}"
 bin="${BRASH_BIN:-$here/build/bin}"
 case_src="$(cd "${CASE:-$here/cases/jbc_quick}" && pwd)"
 sides=("${SIDE_A:-1}" "${SIDE_B:-2}")
-for exe in brash-case brash-pack brash-liggghts-run brash-post; do
-  [ -x "$bin/$exe" ] || { echo "rank_ensemble: $bin/$exe not found (build first, or set BRASH_BIN)" >&2; exit 2; }
-done
 mkdir -p "$out/cases"
 np_of() { echo "${1%%:*}"; }
 edits_of() { [[ "$1" == *:* ]] && echo "${1#*:}" || true; }
 # run name of a side: np<N>, plus the edits when there are any (np1-run.timestep_s_2.0e-4)
 side_name() {
-  local e; e="$(edits_of "$1")"
-  echo "np$(np_of "$1")${e:+-$(printf '%s' "$e" | tr ',=' '__' | tr -cd 'A-Za-z0-9._-')}"
+  local e np; e="$(edits_of "$1")"; np="$(np_of "$1")"
+  case "$np" in ode) np=ode ;; ode@*) np="ode_dt${np#ode@}" ;; *) np="np$np" ;; esac
+  echo "$np${e:+-$(printf '%s' "$e" | tr ',=' '__' | tr -cd 'A-Za-z0-9._-')}"
 }
+is_ode() { [[ "$(np_of "$1")" == ode* ]]; }
+engines=(brash-liggghts-run); for side in "${sides[@]}"; do is_ode "$side" && engines+=(brash-ode); done
+for exe in brash-case brash-pack "${engines[@]}" brash-post; do
+  [ -x "$bin/$exe" ] || { echo "rank_ensemble: $bin/$exe not found (build first, or set BRASH_BIN)" >&2; exit 2; }
+done
 seed_case() { echo "$out/cases/$(basename "$case_src")_s$1"; }
 complete() { [ -f "$1/report.json" ] && grep -q '"status": "complete"' "$1/report.json"; }
 run_one() {  # seed, side
@@ -47,8 +51,14 @@ run_one() {  # seed, side
   fi
   rm -rf "$run"
   echo "== seed $1, $2 -> $run ($(date +%H:%M:%S))"
-  "$bin/brash-liggghts-run" "$case_dir" --np "$(np_of "$2")" --out "$run" > "$run.log" 2>&1 ||
-    echo "   seed $1, $2 failed (exit $?): see $run.log"
+  if is_ode "$2"; then
+    local np dt=(); np="$(np_of "$2")"; [[ "$np" == ode@* ]] && dt=(--dt "${np#ode@}")
+    { "$bin/brash-ode" "$case_dir" --out "$run" "${dt[@]}" --no-progress && "$bin/brash-post" "$run"; } > "$run.log" 2>&1 ||
+      echo "   seed $1, $2 failed (exit $?): see $run.log"
+  else
+    "$bin/brash-liggghts-run" "$case_dir" --np "$(np_of "$2")" --out "$run" > "$run.log" 2>&1 ||
+      echo "   seed $1, $2 failed (exit $?): see $run.log"
+  fi
 }
 for s in $(seq 1 "$n_seeds"); do
   case_dir="$(seed_case "$s")"
@@ -61,7 +71,7 @@ for s in $(seq 1 "$n_seeds"); do
 done
 for side in "${sides[@]}"; do
   for s in $(seq 1 "$n_seeds"); do
-    if [ "$(np_of "$side")" = 1 ] && [ "${JOBS:-2}" -gt 1 ]; then
+    if { [ "$(np_of "$side")" = 1 ] || is_ode "$side"; } && [ "${JOBS:-2}" -gt 1 ]; then
       run_one "$s" "$side" &
       while [ "$(jobs -rp | wc -l)" -ge "${JOBS:-2}" ]; do wait -n || true; done
     else
@@ -80,7 +90,11 @@ T = [12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228, 2.20
      2.120, 2.110, 2.101, 2.093, 2.086, 2.080, 2.074, 2.069, 2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042]
 def label(side):
     np_, _, edits = side.partition(':')
-    return '%s rank%s%s' % (np_, '' if np_ == '1' else 's', ', ' + edits if edits else '')
+    if np_.startswith('ode'):
+        eng = 'ODE' + (', dt ' + np_[4:] + ' s' if np_.startswith('ode@') else '')
+    else:
+        eng = '%s rank%s' % (np_, '' if np_ == '1' else 's')
+    return eng + (', ' + edits if edits else '')
 def wall_s(run):
     try:
         return float(json.load(open(os.path.join(out, run, 'meta.json')))['wall_time_s'])

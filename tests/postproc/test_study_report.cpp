@@ -147,6 +147,8 @@ TEST(StudyReport, TablesCarryValuesAndFailuresAreReported) {
   EXPECT_NE(md.find("## Runs in progress"), std::string::npos);
   EXPECT_NE(md.find("| R9 | `"), std::string::npos);
   EXPECT_NE(md.find("**IN PROGRESS** (in progress: model time 7.70 s of 40 s reached)"), std::string::npos);
+  // the paper case's run folder does not exist: no set-up table (nothing to read it from)
+  EXPECT_EQ(md.find("set-up vs the paper's"), std::string::npos);
   const json s = json::parse(read(d / "summary.json"));
   EXPECT_EQ(s["failed"], 4);
   EXPECT_EQ(s["in_progress"], 1);
@@ -209,4 +211,54 @@ TEST(StudyReport, BadManifestIsAnError) {
   EXPECT_NE(run_tool(d, fmt::format("'{}' --out '{}'", (d / "manifest.tsv").string(), (d / "study.md").string())), 0);
   EXPECT_NE(read(d / "tool.log").find("command"), std::string::npos);
   EXPECT_NE(run_tool(d, fmt::format("'{}' --out '{}'", (d / "nothing.tsv").string(), (d / "study.md").string())), 0);
+}
+
+// Issue 11 "where we differ, say why": the paper-case set-up table is read from each paper run's own
+// case.yaml and meta.json (started runs too), never typed: a changed stiffness, step or far-field rule shows
+// up in it.
+TEST(StudyReport, PaperSetUpTableComesFromEachRunsCaseAndMeta) {
+  const fs::path d = fresh_dir("setup");
+  fs::create_directories(d / "runs/pl");
+  fs::create_directories(d / "runs/po");
+  std::ofstream(d / "runs/pl/case.yaml") << "name: jbc_ia_5kn\ncontact: {youngs_modulus_pa: 3.125e5}\n"
+                                            "speedups: {farfield: true, farfield_wake_force_weight: 0}\n";
+  std::ofstream(d / "runs/pl/meta.json") << json{
+      {"engine", "liggghts"},
+      {"fluid_model", "added_mass"},
+      {"dt_s", 4e-4},
+      {"particles", 417415}}.dump();
+  std::ofstream(d / "runs/po/case.yaml") << "name: jbc_ia_5kn\nice: {diameter_sd_m: 0.001}\n";
+  std::ofstream(d / "runs/po/meta.json")
+      << json{{"engine", "ode"},
+              {"fluid_model", "drag"},
+              {"dt_s", 1e-3},
+              {"particles", 417000},
+              {"ode_options", {{"erp", 0.2}, {"cfm", 1e-5}, {"iterations", 20}, {"cull", false}}}}
+             .dump();
+  std::string m = kHeader;
+  m += "pl\tpaper\tpaper am\t\t\t1\tjbc_ia_5kn\tin progress: model time 1.00 s of 40 s reached\truns/pl\tcmd "
+       "pl\n";
+  m += "po\tpaper\tpaper ode\t\t\t1\tjbc_ia_5kn\tin progress: model time 2.00 s of 40 s "
+       "reached\truns/po\tcmd po\n";
+  std::ofstream(d / "manifest.tsv") << m;
+  ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --plot none --figures none",
+                                    (d / "manifest.tsv").string(), (d / "study.md").string())),
+            0)
+      << read(d / "tool.log");
+  const std::string md = read(d / "study.md");
+  const auto at = md.find("### Our paper-case set-up vs the paper's");
+  ASSERT_NE(at, std::string::npos) << md;
+  const std::string t = md.substr(at, md.find("\n\n", md.find("| item |", at)) - at);
+  EXPECT_NE(t.find("| R1 (liggghts added_mass) | R2 (ode drag) |"), std::string::npos) << t;
+  EXPECT_NE(
+      t.find("| Hertz-Mindlin, E = 3.125e+05 Pa, ν = 0.3, e = 0.3 | ODE rigid, contact joints (ERP 0.2, CFM "
+             "1e-05, 20 iterations) |"),
+      std::string::npos)
+      << t;
+  EXPECT_NE(t.find("| time step | not stated | 0.0004 s | 0.001 s |"), std::string::npos) << t;
+  EXPECT_NE(t.find("417415 spheres, d = 0.017578 m ± 0.0008789 m"), std::string::npos) << t;
+  EXPECT_NE(t.find("417000 spheres, d = 0.017578 m ± 0.001 m"), std::string::npos) << t;
+  EXPECT_NE(t.find("| far field, window alone (biased high) | every piece integrated |"), std::string::npos)
+      << t;
+  EXPECT_NE(t.find("| 1.35 / 0.1 | 1.35 / 0.1 | 1.35 / 0.1 |"), std::string::npos) << t;
 }
