@@ -141,6 +141,50 @@ TEST(LiggghtsRunner, EarlyStopInAResumedRunFollowsTheRule) {
   fs::remove_all(dir);
 }
 
+// SIGTERM to the runner alone (a batch system, `kill PID`): the engine must not run on orphaned. The runner
+// forwards the signal, ends the run as `interrupted` (exit 128 + 15) with the resume command, and --resume finishes it.
+TEST(LiggghtsRunner, TermSignalToTheRunnerStopsTheEngineAndTheRunResumes) {
+  const fs::path dir = brash::test::fresh_dir("sigterm");
+  write_small_case(dir / "case", "[0.3, 0.6]", "0.01", "");
+  const fs::path run = dir / "run";
+  const std::string start = "setsid bash -c '" + brash::test::runner_command(dir / "case", run) + " & echo $! > \"" +
+                            (dir / "pid").string() + "\"; wait $!; echo $? > \"" + (dir / "rc").string() + "\"' > '" +
+                            (dir / "run.log").string() + "' 2>&1 &";
+  ASSERT_EQ(std::system(start.c_str()), 0);
+  bool first = false;
+  for (int i = 0; i < 600 && !first; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    first = fs::exists(run / "restart/a.restart") || fs::exists(run / "restart/b.restart");
+  }
+  ASSERT_TRUE(first) << "no restart file";
+  const std::string runner_pid = brash::test::read_text(dir / "pid").substr(0, brash::test::read_text(dir / "pid").find('\n'));
+  const std::string engine_pid =
+      brash::test::read_text(run / "engine.pid").substr(0, brash::test::read_text(run / "engine.pid").find('\n'));
+  ASSERT_FALSE(engine_pid.empty());
+  ASSERT_EQ(std::system(("kill -TERM " + runner_pid).c_str()), 0);  // the runner only, not its process group
+  bool rc_written = false;
+  for (int i = 0; i < 300 && !rc_written; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    rc_written = fs::exists(dir / "rc") && !brash::test::read_text(dir / "rc").empty();
+  }
+  ASSERT_TRUE(rc_written) << "the runner did not exit within 30 s of SIGTERM";
+  EXPECT_EQ(std::stoi(brash::test::read_text(dir / "rc")), 128 + 15) << brash::test::read_text(dir / "run.log");
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  EXPECT_NE(std::system(("kill -0 " + engine_pid + " 2>/dev/null").c_str()), 0) << "the engine runs on orphaned";
+  const std::string meta = brash::test::read_text(run / "meta.json");
+  EXPECT_NE(meta.find("\"interrupted\""), std::string::npos) << meta;
+  EXPECT_NE(meta.find("--resume " + run.string()), std::string::npos) << meta;
+  EXPECT_FALSE(fs::exists(run / "restart/final.restart")) << "signalled too late: the run had finished";
+  ASSERT_EQ(std::system((std::string("'") + BRASH_BIN_DIR + "/brash-liggghts-run' --resume '" + run.string() +
+                         "' --no-post > '" + (dir / "resume.log").string() + "' 2>&1")
+                            .c_str()),
+            0)
+      << brash::test::read_text(dir / "resume.log");
+  EXPECT_NE(brash::test::read_text(run / "meta.json").find("\"complete\""), std::string::npos);
+  EXPECT_NEAR(read_force(run / "hull_force.csv").back().t, 0.6, 1e-9);
+  fs::remove_all(dir);
+}
+
 TEST(LiggghtsRunner, RestartIntervalDefaultsToATenthOfTheRunAndCanBeSet) {
   const fs::path dir = brash::test::fresh_dir("restart_every");
   write_small_case(dir / "case", "[0.0, 0.6]", "0.01", "");

@@ -3,8 +3,10 @@
 // brash-post on it. Progress with ETA on the terminal.
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <fmt/format.h>
 #include <fstream>
 #include <iostream>
@@ -29,6 +31,22 @@ namespace fs = std::filesystem;
 using brash::InputError;
 
 namespace {
+
+// SIGTERM / SIGINT / SIGHUP sent to the runner alone (a batch system, `kill`, a closed terminal) are forwarded to
+// the engine, which would otherwise run on orphaned; the run then ends as `interrupted`, resumable.
+std::atomic<long> g_engine_pid{0};  // lock-free: read in the signal handler
+volatile std::sig_atomic_t g_signal = 0;
+extern "C" void forward_signal(int sig) {
+  g_signal = sig;
+  if (const long pid = g_engine_pid.load(); pid > 0) ::kill(static_cast<pid_t>(pid), SIGTERM);
+}
+void install_signal_forwarding() {
+  struct sigaction sa {};
+  sa.sa_handler = forward_signal;
+  sigemptyset(&sa.sa_mask);
+  sa.sa_flags = SA_RESTART;  // the engine's output keeps being read until it exits
+  for (int sig : {SIGTERM, SIGINT, SIGHUP}) ::sigaction(sig, &sa, nullptr);
+}
 
 struct ForceRow {
   double t, fx, fy, fz;
@@ -189,9 +207,18 @@ EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, c
   // line of its own every 30 s, so that the log stays readable.
   const bool tty = ::isatty(::fileno(stderr)) != 0;
   const double print_every_s = tty ? 2.0 : 30.0;
+  g_engine_pid = 0;
   while (std::fgets(buf, sizeof buf, pipe)) {
     const std::string line = buf;
     log << line;
+    if (g_engine_pid.load() == 0) {  // the shell wrote engine.pid before its first output line
+      std::ifstream pidf(run_dir / "engine.pid");
+      long pid = 0;
+      if (pidf >> pid && pid > 0) {
+        g_engine_pid = pid;
+        if (g_signal != 0) ::kill(static_cast<pid_t>(pid), SIGTERM);  // a signal that came before the pid
+      }
+    }
     if (line.rfind("Step ", 0) == 0 || line.find(" Step ") != std::string::npos) in_thermo = true;
     if (line.rfind("ERROR", 0) == 0 && res.error.empty()) res.error = line.substr(0, line.find('\n'));
     if (line.rfind("Loop time of", 0) == 0) {
@@ -235,6 +262,7 @@ EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, c
   }
   if (tty) std::fprintf(stderr, "\n");
   const int rc = ::pclose(pipe);
+  g_engine_pid = 0;
   res.exit_code = WIFEXITED(rc) ? WEXITSTATUS(rc) : 128;
   return res;
 }
@@ -242,6 +270,7 @@ EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, c
 }  // namespace
 
 int main(int argc, char** argv) {
+  install_signal_forwarding();
   CLI::App app{"brash-liggghts-run: run a case directory with LIGGGHTS and write the brash run layout"};
   fs::path case_dir, out_dir, runs_root = "runs";
   int ranks = 1;
@@ -391,7 +420,7 @@ int main(int argc, char** argv) {
         std::cerr << "[brash-liggghts] resuming " << run_dir.string() << " from " << restart << "\n";
         meta["resumed_from"] = restart;
         res = run_engine(run_dir, ranks, run_duration, "in_resume.lmp", &early, restart_every_model_s);
-        if (early.stopped || (res.exit_code == 0 && res.error.empty())) break;
+        if (early.stopped || g_signal != 0 || (res.exit_code == 0 && res.error.empty())) break;
         std::cerr << "[brash-liggghts] resume from " << restart << " failed: " << res.error << "\n";
       }
     }
@@ -420,6 +449,14 @@ int main(int argc, char** argv) {
       res.exit_code = 0;
       res.error.clear();
       meta["particle_steps"] = static_cast<double>(spheres.size()) * std::round(early.t_stop / c.run.timestep_s);
+    }
+    if (g_signal != 0 && !early.stopped) {
+      meta["status"] = "interrupted";
+      meta["reason"] = fmt::format("signal {} ({}): the engine was stopped; continue with brash-liggghts-run "
+                                   "--resume {}", static_cast<int>(g_signal), strsignal(g_signal), run_dir.string());
+      brash::run::write_meta(run_dir, meta);
+      std::cerr << "[brash-liggghts] interrupted: " << meta["reason"].get<std::string>() << "\n";
+      return 128 + g_signal;
     }
     if (res.exit_code != 0 || !res.error.empty()) {
       meta["status"] = "failed";
