@@ -52,6 +52,18 @@ double mean_resistance(const std::vector<Row>& rows, double t0) {
 }  // namespace
 
 namespace {
+// Waits up to 60 s for the first periodic restart file of a run started in the background.
+bool wait_for_restart_file(const fs::path& run) {
+  for (int i = 0; i < 600; ++i) {
+    if (fs::exists(run / "restart/a.restart") || fs::exists(run / "restart/b.restart")) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  return false;
+}
+std::string first_line(const fs::path& file) {
+  const std::string text = brash::test::read_text(file);
+  return text.substr(0, text.find('\n'));
+}
 // The quick case, narrowed and shortened (liggghts_runner.h): 0.6 s.
 void write_small_case(const fs::path& case_dir, const std::string& window, const std::string& output_interval,
                       const std::string& extra) {
@@ -105,12 +117,7 @@ TEST(LiggghtsRunner, EarlyStopInAResumedRunFollowsTheRule) {
                             brash::test::runner_command(dir / "case", run) + "' > '" + (dir / "killed.log").string() +
                             "' 2>&1 &";
   ASSERT_EQ(std::system(start.c_str()), 0);
-  bool first = false;
-  for (int i = 0; i < 600 && !first; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    first = fs::exists(run / "restart/a.restart") || fs::exists(run / "restart/b.restart");
-  }
-  ASSERT_TRUE(first) << "no restart file";
+  ASSERT_TRUE(wait_for_restart_file(run)) << "no restart file";
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   const std::string pid = brash::test::read_text(dir / "pid");
   ASSERT_EQ(std::system(("kill -9 -" + pid.substr(0, pid.find('\n')) + " 2>/dev/null; sleep 0.5").c_str()), 0);
@@ -151,15 +158,8 @@ TEST(LiggghtsRunner, TermSignalToTheRunnerStopsTheEngineAndTheRunResumes) {
                             (dir / "pid").string() + "\"; wait $!; echo $? > \"" + (dir / "rc").string() + "\"' > '" +
                             (dir / "run.log").string() + "' 2>&1 &";
   ASSERT_EQ(std::system(start.c_str()), 0);
-  bool first = false;
-  for (int i = 0; i < 600 && !first; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    first = fs::exists(run / "restart/a.restart") || fs::exists(run / "restart/b.restart");
-  }
-  ASSERT_TRUE(first) << "no restart file";
-  const std::string runner_pid = brash::test::read_text(dir / "pid").substr(0, brash::test::read_text(dir / "pid").find('\n'));
-  const std::string engine_pid =
-      brash::test::read_text(run / "engine.pid").substr(0, brash::test::read_text(run / "engine.pid").find('\n'));
+  ASSERT_TRUE(wait_for_restart_file(run)) << "no restart file";
+  const std::string runner_pid = first_line(dir / "pid"), engine_pid = first_line(run / "engine.pid");
   ASSERT_FALSE(engine_pid.empty());
   ASSERT_EQ(std::system(("kill -TERM " + runner_pid).c_str()), 0);  // the runner only, not its process group
   bool rc_written = false;
