@@ -146,6 +146,14 @@ void load_report(Run& r) {
   if (r.exit_text.rfind("in progress", 0) == 0) {
     r.in_progress = true;
     r.problem = r.exit_text;
+    // engine and model of a run still going: from its meta.json (written at its start)
+    if (std::ifstream in(r.run_dir.empty() ? fs::path() : r.run_dir / "meta.json"); in) {
+      const json m = json::parse(in, nullptr, /*allow_exceptions=*/false);
+      if (m.is_object()) {
+        r.engine = m.value("engine", r.engine);
+        r.model = m.value("fluid_model", r.model);
+      }
+    }
     return;
   }
   if (!r.exit_text.empty()) r.problem = "runner: " + r.exit_text;

@@ -250,6 +250,9 @@ TEST(StudyReport, PaperSetUpTableComesFromEachRunsCaseAndMeta) {
   ASSERT_NE(at, std::string::npos) << md;
   const std::string t = md.substr(at, md.find("\n\n", md.find("| item |", at)) - at);
   EXPECT_NE(t.find("| R1 (liggghts added_mass) | R2 (ode drag) |"), std::string::npos) << t;
+  // the rows of the runs still going name their engine and model (from meta.json), not "?"
+  EXPECT_NE(md.find("| R1 | paper am | liggghts | added_mass |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| R2 | paper ode | ode | drag |"), std::string::npos) << md;
   EXPECT_NE(
       t.find("| Hertz-Mindlin, E = 3.125e+05 Pa, ν = 0.3, e = 0.3 | ODE rigid, contact joints (ERP 0.2, CFM "
              "1e-05, 20 iterations) |"),
