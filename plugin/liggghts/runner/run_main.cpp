@@ -270,7 +270,6 @@ EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, c
 }  // namespace
 
 int main(int argc, char** argv) {
-  install_signal_forwarding();
   CLI::App app{"brash-liggghts-run: run a case directory with LIGGGHTS and write the brash run layout"};
   fs::path case_dir, out_dir, runs_root = "runs";
   int ranks = 1;
@@ -404,6 +403,9 @@ int main(int argc, char** argv) {
     std::cerr << "[brash-liggghts] " << spheres.size() << " spheres, " << mesh.faces.size() << " hull triangles, "
               << ranks << " rank(s) -> " << run_dir.string() << "\n";
 
+    // From here on an engine may run: a signal to the runner is forwarded to it (before, nothing is left behind
+    // and the default action ends the runner at once).
+    install_signal_forwarding();
     const auto t0 = std::chrono::steady_clock::now();
     EngineResult res;
     EarlyStop early{c.speedups.early_stop_rel_ci, c.run.window_s[0], c.run.window_s[1],
