@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Issue 9's "within 2 %" per speed-up knob: each knob as a paired-seed ensemble against the case as it is
 # (bench/rank_ensemble.sh, side A = 1 rank with no edits, side B = 1 rank with the knob), then the Pareto plot
-# (bench/pareto_plot.sh -> docs/performance_pareto.png). ~3 h on a quiet 2-core machine for the five knobs at 12
+# (bench/pareto_plot.sh -> docs/performance_pareto.png). ~4 h on a quiet 2-core machine for the eight knobs at 12
 # seeds (two runs at a time); finished runs are kept and skipped, so it can be stopped and started again.
 #   bash bench/knob_ensembles.sh [N_SEEDS (12)] [OUT (runs/rank-ensemble: shares side A with the rank comparison)]
 # env: CASE (cases/jbc_quick), KNOBS (names below, default all), JOBS (2), BRASH_BIN.
