@@ -31,7 +31,7 @@ Limits limits_for_case(const Case& c, const Box& domain) {
   const double gd = 0.25 * c.ice.diameter_mean_m;
   l.box = Box{domain[0] + gd, domain[1] - gd, domain[2] + gd, domain[3] - gd, domain[4] + gd, domain[5] - gd};
   l.z_max_m = std::min(domain[5] - gd, c.water.level_m + 5 * c.ice.thickness_m);
-  const double dmax = c.ice.diameter_mean_m + c.ice.diameter_truncation_sd * c.ice.diameter_sd_m;
+  const double dmax = 2 * max_radius_m(c);
   const double vmax = std::max(20 * c.ship.speed_m_s, 5.0);
   l.ke_max_J = 0.5 * c.ice.density_kg_m3 * std::numbers::pi / 6 * dmax * dmax * dmax * vmax * vmax;
   if (c.guards.max_hull_penetration_d > 0) l.max_hull_penetration_d = c.guards.max_hull_penetration_d;

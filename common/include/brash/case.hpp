@@ -185,6 +185,10 @@ struct Case {
 // run.timestep_s / T_R (the loader rejects larger steps; docs/stability.md).
 inline constexpr double kMaxTimestepOverRayleigh = 0.3;
 double min_radius_m(const Case& c);
+// Largest ice sphere radius, (mean + truncation_sd * sd) / 2. Inline: the guards use it without the case loader.
+inline double max_radius_m(const Case& c) {
+  return 0.5 * (c.ice.diameter_mean_m + c.ice.diameter_truncation_sd * c.ice.diameter_sd_m);
+}
 // Rayleigh time of a Hertz contact: T_R = pi r sqrt(rho / G) / (0.1631 nu + 0.8766), G = E / (2 (1 + nu)).
 // Inline: the guards (brash_guard) use it without linking the case loader.
 inline double rayleigh_time_s(double radius_m, double density_kg_m3, double youngs_modulus_pa, double poisson_ratio) {

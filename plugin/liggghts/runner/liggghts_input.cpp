@@ -81,9 +81,7 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
   // Spatial sort of the atoms every 1000 steps, bins of half the neighbour cutoff (LAMMPS' default size, given
   // explicitly: the default is derived from a cutoff that is 0 while the box is empty). Pair and neighbour loops
   // then walk memory in order: ~2.2x faster on the paper scene (docs/performance.md "Atom sorting").
-  const double sort_bin_m =
-      0.5 * (c.ice.diameter_mean_m + c.ice.diameter_truncation_sd * c.ice.diameter_sd_m +
-             c.speedups.neighbor_skin_d * c.ice.diameter_mean_m);
+  const double sort_bin_m = max_radius_m(c) + 0.5 * c.speedups.neighbor_skin_d * c.ice.diameter_mean_m;
   s += fmt::format("atom_style granular\natom_modify map array sort 1000 {:.6g}\nboundary f f f\nnewton off\n",
                    sort_bin_m);
   s += "communicate single vel yes\nunits si\n";
