@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 namespace brash::guard {
 
@@ -33,7 +32,7 @@ Limits limits_for_case(const Case& c, const Box& domain) {
   l.z_max_m = std::min(domain[5] - gd, c.water.level_m + 5 * c.ice.thickness_m);
   const double dmax = 2 * max_radius_m(c);
   const double vmax = std::max(20 * c.ship.speed_m_s, 5.0);
-  l.ke_max_J = 0.5 * c.ice.density_kg_m3 * std::numbers::pi / 6 * dmax * dmax * dmax * vmax * vmax;
+  l.ke_max_J = 0.5 * c.ice.density_kg_m3 * sphere_volume_m3(dmax) * vmax * vmax;
   if (c.guards.max_hull_penetration_d > 0) l.max_hull_penetration_d = c.guards.max_hull_penetration_d;
   return l;
 }

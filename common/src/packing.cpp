@@ -61,8 +61,6 @@ double sample_diameter(Rng& rng, double mean, double sd, double k) {
   }
 }
 
-double sphere_volume(double d) { return kPi / 6.0 * d * d * d; }
-
 double submerged_volume(double z, double r, double level) {
   const double h = std::clamp(level - (z - r), 0.0, 2.0 * r);
   return kPi * h * h * (3.0 * r - h) / 3.0;
@@ -166,7 +164,7 @@ double floating_shift(const std::vector<Sphere>& s, const PackingRequest& q) {
   for (const auto& b : s) {
     lo_z = std::min(lo_z, b.z_m - 0.5 * b.diameter_m);
     hi_z = std::max(hi_z, b.z_m + 0.5 * b.diameter_m);
-    weight += q.ice_density_kg_m3 * sphere_volume(b.diameter_m);
+    weight += q.ice_density_kg_m3 * sphere_volume_m3(b.diameter_m);
   }
   auto excess = [&](double shift) {
     double f = -weight;
@@ -237,7 +235,7 @@ void validate_packing_request(const PackingRequest& r) {
            fmt::format("channel length {} m is shorter than the largest sphere (d_max = {} m)", r.length_m, dmax));
   if (r.drops_per_sphere < 1) reject(r, "drops_per_sphere", "must be >= 1");
   const double target = (1 - r.porosity) * r.length_m * r.width_m * r.thickness_m;
-  const double approx_count = target / sphere_volume(r.diameter_mean_m);
+  const double approx_count = target / sphere_volume_m3(r.diameter_mean_m);
   if (approx_count > 3.0e7)
     reject(r, "ice.diameter_mean_m",
            fmt::format("about {:.3g} spheres requested; the generator is limited to 3e7 (memory)", approx_count));
@@ -275,7 +273,7 @@ double total_buoyancy_N(const std::vector<Sphere>& s, const PackingRequest& r) {
 
 double total_weight_N(const std::vector<Sphere>& s, const PackingRequest& r) {
   double v = 0;
-  for (const auto& b : s) v += sphere_volume(b.diameter_m);
+  for (const auto& b : s) v += sphere_volume_m3(b.diameter_m);
   return r.ice_density_kg_m3 * 9.81 * v;
 }
 
@@ -290,12 +288,12 @@ Packing generate_packing(const PackingRequest& q) {
   ColumnGrid grid(q.length_m, q.width_m, dmax);
   const std::size_t max_failures = std::max<std::size_t>(2000, grid.cell_count());
   std::vector<Sphere> out;
-  out.reserve(static_cast<std::size_t>(1.05 * target / sphere_volume(q.diameter_mean_m)) + 16);
+  out.reserve(static_cast<std::size_t>(1.05 * target / sphere_volume_m3(q.diameter_mean_m)) + 16);
   double volume = 0;
   std::size_t failures = 0;
   double d = sample_diameter(rng, q.diameter_mean_m, q.diameter_sd_m, q.truncation_sd);
   for (;;) {
-    const double v = sphere_volume(d);
+    const double v = sphere_volume_m3(d);
     // Stop at the count whose volume is closest to the target.
     if (volume + v > target && (volume + v - target) > (target - volume)) break;
     const double r = 0.5 * d;
@@ -339,7 +337,7 @@ PackingStats measure_packing(const std::vector<Sphere>& s, const PackingRequest&
   st.top_z_m = -st.bottom_z_m;
   for (const auto& b : s) {
     sum += b.diameter_m;
-    vol += sphere_volume(b.diameter_m);
+    vol += sphere_volume_m3(b.diameter_m);
     st.d_min_m = std::min(st.d_min_m, b.diameter_m);
     st.d_max_m = std::max(st.d_max_m, b.diameter_m);
     st.bottom_z_m = std::min(st.bottom_z_m, b.z_m - 0.5 * b.diameter_m);

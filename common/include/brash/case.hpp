@@ -189,6 +189,10 @@ double min_radius_m(const Case& c);
 inline double max_radius_m(const Case& c) {
   return 0.5 * (c.ice.diameter_mean_m + c.ice.diameter_truncation_sd * c.ice.diameter_sd_m);
 }
+// Volume of a sphere of diameter d [m^3], pi d^3 / 6 (inline for the same reason as below).
+inline double sphere_volume_m3(double diameter_m) {
+  return std::numbers::pi / 6.0 * diameter_m * diameter_m * diameter_m;
+}
 // Rayleigh time of a Hertz contact: T_R = pi r sqrt(rho / G) / (0.1631 nu + 0.8766), G = E / (2 (1 + nu)).
 // Inline: the guards (brash_guard) use it without linking the case loader.
 inline double rayleigh_time_s(double radius_m, double density_kg_m3, double youngs_modulus_pa, double poisson_ratio) {

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include <fmt/format.h>
 
@@ -136,7 +135,7 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
   if (sp.farfield) {
     // the wake force: a fraction of the mean piece's weight (docs/performance.md, "far field")
     const double d = c.ice.diameter_mean_m;
-    const double weight_N = c.ice.density_kg_m3 * std::numbers::pi / 6.0 * d * d * d * c.water.gravity_m_s2;
+    const double weight_N = c.ice.density_kg_m3 * sphere_volume_m3(d) * c.water.gravity_m_s2;
     const double wake_force_N = sp.farfield_wake_force_weight * weight_N;
     s += fmt::format(
         "fix farfield all brash/farfield every {} ahead {:.9g} behind {:.9g} hull_x0 {:.9g} speed {:.9g} "
