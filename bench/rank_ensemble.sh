@@ -9,7 +9,8 @@
 #   bash bench/rank_ensemble.sh [N_SEEDS (12)] [OUT (runs/rank-ensemble)]
 # env: CASE (cases/jbc_quick), SIDE_A ("1"), SIDE_B ("2"): a side is NP[:section.key=value,...] (MPI ranks, then
 # edits of the case, as in bench/speed_vs_error.sh), e.g. SIDE_B="1:run.timestep_s=2.0e-4" for the dt knob; NP
-# `ode` or `ode@DT` runs the side on brash-ode instead (at its default step, or `--dt DT`), then brash-post;
+# `ode`, `ode@DT` or `ode@DT@ITERATIONS` runs the side on brash-ode instead (at its default step, or `--dt DT`, and
+# `--iterations ITERATIONS` quickstep iterations), then brash-post;
 # TOL_PCT (1): the tolerance the CI is tested against (issue 9 asks 2 % for a knob). The wall-time ratio A / B of the
 # summed runs is printed too (a knob's speed-up; only as fair as the load was alike when the two sides ran).
 # Part of make bench (~1 h on a fresh machine; re-prints once the runs exist). 1-rank runs go two at a time (JOBS,
@@ -29,7 +30,12 @@ edits_of() { [[ "$1" == *:* ]] && echo "${1#*:}" || true; }
 # run name of a side: np<N>, plus the edits when there are any (np1-run.timestep_s_2.0e-4)
 side_name() {
   local e np; e="$(edits_of "$1")"; np="$(np_of "$1")"
-  case "$np" in ode) np=ode ;; ode@*) np="ode_dt${np#ode@}" ;; *) np="np$np" ;; esac
+  case "$np" in
+    ode) np=ode ;;
+    ode@*@*) np="${np#ode@}"; np="ode_dt${np%@*}_it${np#*@}" ;;
+    ode@*) np="ode_dt${np#ode@}" ;;
+    *) np="np$np" ;;
+  esac
   echo "$np${e:+-$(printf '%s' "$e" | tr ',=' '__' | tr -cd 'A-Za-z0-9._-')}"
 }
 is_ode() { [[ "$(np_of "$1")" == ode* ]]; }
@@ -52,8 +58,10 @@ run_one() {  # seed, side
   rm -rf "$run"
   echo "== seed $1, $2 -> $run ($(date +%H:%M:%S))"
   if is_ode "$2"; then
-    local np dt=(); np="$(np_of "$2")"; [[ "$np" == ode@* ]] && dt=(--dt "${np#ode@}")
-    { "$bin/brash-ode" "$case_dir" --out "$run" "${dt[@]}" --no-progress && "$bin/brash-post" "$run"; } > "$run.log" 2>&1 ||
+    local np ode_args=(); np="$(np_of "$2")"
+    if [[ "$np" == ode@*@* ]]; then np="${np#ode@}"; ode_args=(--dt "${np%@*}" --iterations "${np#*@}")
+    elif [[ "$np" == ode@* ]]; then ode_args=(--dt "${np#ode@}"); fi
+    { "$bin/brash-ode" "$case_dir" --out "$run" "${ode_args[@]}" --no-progress && "$bin/brash-post" "$run"; } > "$run.log" 2>&1 ||
       echo "   seed $1, $2 failed (exit $?): see $run.log"
   else
     "$bin/brash-liggghts-run" "$case_dir" --np "$(np_of "$2")" --out "$run" > "$run.log" 2>&1 ||
@@ -91,7 +99,8 @@ T = [12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228, 2.20
 def label(side):
     np_, _, edits = side.partition(':')
     if np_.startswith('ode'):
-        eng = 'ODE' + (', dt ' + np_[4:] + ' s' if np_.startswith('ode@') else '')
+        parts = np_.split('@')[1:]
+        eng = 'ODE' + (', dt %s s' % parts[0] if parts else '') + (', %s iterations' % parts[1] if len(parts) > 1 else '')
     else:
         eng = '%s rank%s' % (np_, '' if np_ == '1' else 's')
     return eng + (', ' + edits if edits else '')
