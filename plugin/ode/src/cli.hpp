@@ -27,9 +27,9 @@ inline void add_run_options(CLI::App& app, RunOptions& o, std::string& implicit_
       ->capture_default_str();
   app.add_option("--broad-phase", o.stepper.broad_phase,
                  "broad phase: grid (ours, follows the active spheres) | sap (ODE's sweep and prune); same contacts")
-      ->transform(CLI::CheckedTransformer(std::map<std::string, BroadPhase>{{"grid", BroadPhase::Grid},
-                                                                            {"sap", BroadPhase::Sap}}))
-      ->default_str("grid");
+      ->transform(CLI::CheckedTransformer(std::map<std::string, BroadPhase>{{to_string(BroadPhase::Grid), BroadPhase::Grid},
+                                                                            {to_string(BroadPhase::Sap), BroadPhase::Sap}}))
+      ->default_str(to_string(BroadPhase::Grid));
   app.add_flag("--auto-disable", o.skips.auto_disable, "skip: ODE auto-disable of resting spheres far from the hull");
   app.add_option("--disable-linear", o.skips.disable_linear_m_s, "auto-disable linear speed threshold [m/s]")
       ->capture_default_str();

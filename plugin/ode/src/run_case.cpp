@@ -152,7 +152,7 @@ nlohmann::json options_json(const RunOptions& o) {
           {"contact_surface_layer_m", st.contact_surface_layer},
           {"max_contacts_per_pair", st.max_contacts_per_pair},
           {"angular_damping", st.angular_damping},
-          {"broad_phase", st.broad_phase == BroadPhase::Sap ? "sap" : "grid"},
+          {"broad_phase", to_string(st.broad_phase)},
           {"auto_disable", k.auto_disable},
           {"disable_linear_m_s", k.disable_linear_m_s},
           {"disable_angular_rad_s", k.disable_angular_rad_s},
@@ -197,7 +197,7 @@ RunOptions options_from_meta(const fs::path& run_dir, const RunOptions& cli) {
     o.stepper.max_contacts_per_pair = j.at("max_contacts_per_pair");
     o.stepper.angular_damping = j.at("angular_damping");
     // Runs before the switch existed used sap; grid gives the same contacts (see world.hpp), so they go on with it.
-    o.stepper.broad_phase = j.value("broad_phase", "grid") == "sap" ? BroadPhase::Sap : BroadPhase::Grid;
+    o.stepper.broad_phase = j.value("broad_phase", "grid") == to_string(BroadPhase::Sap) ? BroadPhase::Sap : BroadPhase::Grid;
     o.skips.auto_disable = j.at("auto_disable");
     o.skips.disable_linear_m_s = j.at("disable_linear_m_s");
     o.skips.disable_angular_rad_s = j.at("disable_angular_rad_s");
@@ -299,7 +299,8 @@ RunResult run_case(const RunOptions& cli_options) {
       {"reason", ""},
       {"stepper", {{"quickstep_iterations", st.iterations}, {"erp", st.erp}, {"cfm", st.cfm},
                    {"contact_surface_layer_m", st.contact_surface_layer}, {"max_contacts_per_pair", st.max_contacts_per_pair},
-                   {"angular_damping", st.angular_damping}, {"contact", "dContactApprox1"}, {"space", "SAP xyz"}}},
+                   {"angular_damping", st.angular_damping}, {"contact", "dContactApprox1"},
+                   {"broad_phase", st.broad_phase == BroadPhase::Sap ? "ODE sweep and prune (xyz)" : "grid (brash)"}}},
       {"skips", {{"auto_disable", o.skips.auto_disable}, {"auto_disable_far_only", o.skips.auto_disable_far_only},
                  {"disable_linear_m_s", o.skips.disable_linear_m_s}, {"disable_angular_rad_s", o.skips.disable_angular_rad_s},
                  {"disable_steps", o.skips.disable_steps}, {"cull", o.skips.cull}, {"cull_ahead_m", o.skips.cull_ahead_m},

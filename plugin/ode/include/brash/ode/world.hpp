@@ -49,6 +49,8 @@ enum class ImplicitMode { EffectiveMass, ScaleForces };
 // overlap to the same narrow phase (dCollide) and the joints are created in a fixed order, so the run is the same
 // to the last bit (test_restart: GridAndSapBroadPhasesGiveTheSameRun); Sap is kept for checking.
 enum class BroadPhase { Grid, Sap };
+// The option's words (--broad-phase, meta.json "broad_phase"): "grid" | "sap".
+inline const char* to_string(BroadPhase b) { return b == BroadPhase::Sap ? "sap" : "grid"; }
 
 struct StepperSettings {
   double dt_s = 5e-4;              // ode.md: 5e-4 recommended, 1e-3 cross-checked
