@@ -1,0 +1,62 @@
+#!/usr/bin/python3
+"""How far the ice has moved at the channel's free far end, and how far ahead of the bow the push reaches, in the
+particle dumps of a LIGGGHTS run (finished or still going).
+    /usr/bin/python3 bench/channel_end_spread.py RUN_DIR [EVERY (3: every third dump)]
+A floating two-layer bed with no end wall relaxes at its free end (the top layer's weight pushes the bottom layer
+out into open water); this prints, per dump, where that relaxation front is (the first 0.25 m strip, counted from
+the far end, whose pieces moved less than 1 cm on average from their packing positions), how many pieces have left
+the channel (x > length), and the bow's push ahead (the last strip ahead of the bow that moved more than 1 cm).
+Needs Debian's python3-numpy (hence /usr/bin/python3). Reads RUN_DIR/case.yaml for the channel length, the hull's
+start and the speed, and the case's packing file for the packing positions (piece id = packing row)."""
+import glob
+import os
+import re
+import sys
+
+import numpy as np
+
+run = sys.argv[1]
+every = int(sys.argv[2]) if len(sys.argv) > 2 else 3
+text = open(os.path.join(run, 'case.yaml')).read()
+
+
+def value(section, key):
+    m = re.search(r'^%s:\n(?:  .*\n)*?  %s: *"?([^"\n]+)"?' % (section, key), text, re.M)
+    if not m:
+        sys.exit('%s/case.yaml: no %s.%s' % (run, section, key))
+    return m.group(1)
+
+
+length = float(value('channel', 'length_m'))
+start_x = float(value('hull', 'start_x_m'))
+lpp = float(value('hull', 'lpp_m'))
+speed = float(value('ship', 'speed_m_s'))
+packing = np.loadtxt(value('ice', 'packing_file'), delimiter=',', comments='#', skiprows=2)
+meta = open(os.path.join(run, 'meta.json')).read()
+dt = float(re.search(r'"dt_s": *([0-9.eE+-]+)', meta).group(1))
+dumps = sorted(glob.glob(os.path.join(run, 'particles', 'dump.*.txt')))
+if not dumps:
+    sys.exit('%s: no particle dumps' % run)
+print('| t [s] | bow x [m] | far-end front at x0 [m] | pieces beyond x = %g m | push reaches (ahead of bow) [m] |'
+      % length)
+print('|---|---|---|---|---|')
+for f in dumps[::every] + ([dumps[-1]] if (len(dumps) - 1) % every else []):
+    t = int(f.split('.')[-2]) * dt
+    d = np.loadtxt(f, skiprows=9, usecols=(0, 1))
+    x0 = packing[d[:, 0].astype(int) - 1, 1]
+    moved = np.abs(d[:, 1] - x0)
+    front = length
+    for a in np.arange(length - 0.25, 0, -0.25):
+        m = (x0 >= a) & (x0 < a + 0.25)
+        if m.any() and moved[m].mean() < 0.01:
+            front = a + 0.25
+            break
+    bow = start_x + lpp + speed * t  # the hull's x range is [start_x, start_x + Lpp] at t = 0
+    reach = 0.0
+    for a in np.arange(0, max(0.0, front - bow), 0.25):
+        m = (x0 >= bow + a) & (x0 < bow + a + 0.25)
+        if m.any() and moved[m].mean() >= 0.01:
+            reach = a + 0.25
+        else:
+            break
+    print('| %.1f | %.2f | %.2f | %d | %.2f |' % (t, bow, front, (d[:, 1] > length).sum(), reach))
