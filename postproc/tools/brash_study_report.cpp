@@ -529,6 +529,15 @@ void section_setup(Study& s, std::string& md) {
                                 ? "far field with the wake rule"
                                 : "far field, window alone (biased high)");
        }},
+      {"channel ends", "21.0 x 2.25 m; what bounds the ends is not stated",
+       "open ends let the floating bed relax into open water: on the LIGGGHTS paper run the front of moved ice creeps "
+       "in from the far end and may meet the bow's push late in the window; an end wall would be the frozen wall "
+       "the far-field ensembles measured (docs/performance.md, bench/channel_end_spread.py)",
+       [&](const Col& c) {
+         const bool walls = is_ode(c) && ode_opt(c).value("end_walls", false);
+         return fmt::format("{:g} x {:g} m, side walls, ends {}", c.c.channel.length_m, c.c.channel.width_m,
+                            walls ? "walled (x = 0 and x = length)" : "open");
+       }},
       {"FSICR R_CH hull parameters", "not given (R_CH = 999 kN)",
        "measured on our STL: docs/fsicr_vs_paper.md explains the difference to 999 kN",
        [](const Col&) { return std::string("measured on the STL (table above)"); }},

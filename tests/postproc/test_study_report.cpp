@@ -233,7 +233,7 @@ TEST(StudyReport, PaperSetUpTableComesFromEachRunsCaseAndMeta) {
               {"fluid_model", "drag"},
               {"dt_s", 1e-3},
               {"particles", 417000},
-              {"ode_options", {{"erp", 0.2}, {"cfm", 1e-5}, {"iterations", 20}, {"cull", false}}}}
+              {"ode_options", {{"erp", 0.2}, {"cfm", 1e-5}, {"iterations", 20}, {"cull", false}, {"end_walls", true}}}}
              .dump();
   std::string m = kHeader;
   m += "pl\tpaper\tpaper am\t\t\t1\tjbc_ia_5kn\tin progress: model time 1.00 s of 40 s reached\truns/pl\tcmd "
@@ -264,4 +264,9 @@ TEST(StudyReport, PaperSetUpTableComesFromEachRunsCaseAndMeta) {
   EXPECT_NE(t.find("| far field, window alone (biased high) | every piece integrated |"), std::string::npos)
       << t;
   EXPECT_NE(t.find("| 1.35 / 0.1 | 1.35 / 0.1 | 1.35 / 0.1 |"), std::string::npos) << t;
+  // LIGGGHTS has side walls only; an ODE run says whether it closed the ends (--end-walls)
+  EXPECT_NE(t.find("| 21 x 2.25 m, side walls, ends open | 21 x 2.25 m, side walls, ends walled (x = 0 and x = "
+                   "length) |"),
+            std::string::npos)
+      << t;
 }
