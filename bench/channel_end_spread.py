@@ -31,7 +31,14 @@ length = float(value('channel', 'length_m'))
 start_x = float(value('hull', 'start_x_m'))
 lpp = float(value('hull', 'lpp_m'))
 speed = float(value('ship', 'speed_m_s'))
-packing = np.loadtxt(value('ice', 'packing_file'), delimiter=',', comments='#', skiprows=2)
+packing_file = value('ice', 'packing_file')
+with open(packing_file) as f:  # '#' comment lines, then the header id,x,y,z,diameter
+    rows = [line for line in f if not line.startswith('#')]
+columns = rows[0].strip().split(',')
+packing = np.loadtxt(rows[1:], delimiter=',')
+packing_x = packing[:, columns.index('x')]
+if not (packing[:, columns.index('id')] == np.arange(1, len(packing) + 1)).all():  # dump ids index the rows
+    sys.exit('%s: ids are not 1..N in file order' % packing_file)
 meta = open(os.path.join(run, 'meta.json')).read()
 dt = float(re.search(r'"dt_s": *([0-9.eE+-]+)', meta).group(1))
 dumps = sorted(glob.glob(os.path.join(run, 'particles', 'dump.*.txt')))
@@ -43,7 +50,7 @@ print('|---|---|---|---|---|')
 for f in dumps[::every] + ([dumps[-1]] if (len(dumps) - 1) % every else []):
     t = int(f.split('.')[-2]) * dt
     d = np.loadtxt(f, skiprows=9, usecols=(0, 1))
-    x0 = packing[d[:, 0].astype(int) - 1, 1]
+    x0 = packing_x[d[:, 0].astype(int) - 1]
     moved = np.abs(d[:, 1] - x0)
     front = length
     for a in np.arange(length - 0.25, 0, -0.25):

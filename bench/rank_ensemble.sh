@@ -27,18 +27,19 @@ sides=("${SIDE_A:-1}" "${SIDE_B:-2}")
 mkdir -p "$out/cases"
 np_of() { echo "${1%%:*}"; }
 edits_of() { [[ "$1" == *:* ]] && echo "${1#*:}" || true; }
-# run name of a side: np<N>, plus the edits when there are any (np1-run.timestep_s_2.0e-4)
+is_ode() { [[ "$(np_of "$1")" == ode* ]]; }
+# field N of an ODE side ode[@DT[@ITERATIONS]]: 1 = DT, 2 = ITERATIONS (empty when not given)
+ode_field() { local IFS=@ f; read -r -a f <<< "$(np_of "$1")"; echo "${f[$2]:-}"; }
+# run name of a side: np<N> or ode[_dt<DT>][_it<N>], plus the edits when there are any (np1-run.timestep_s_2.0e-4)
 side_name() {
-  local e np; e="$(edits_of "$1")"; np="$(np_of "$1")"
-  case "$np" in
-    ode) np=ode ;;
-    ode@*@*) np="${np#ode@}"; np="ode_dt${np%@*}_it${np#*@}" ;;
-    ode@*) np="ode_dt${np#ode@}" ;;
-    *) np="np$np" ;;
-  esac
+  local e np dt it; e="$(edits_of "$1")"; np="$(np_of "$1")"
+  if is_ode "$1"; then
+    dt="$(ode_field "$1" 1)"; it="$(ode_field "$1" 2)"; np="ode${dt:+_dt$dt}${it:+_it$it}"
+  else
+    np="np$np"
+  fi
   echo "$np${e:+-$(printf '%s' "$e" | tr ',=' '__' | tr -cd 'A-Za-z0-9._-')}"
 }
-is_ode() { [[ "$(np_of "$1")" == ode* ]]; }
 engines=(brash-liggghts-run); for side in "${sides[@]}"; do is_ode "$side" && engines+=(brash-ode); done
 for exe in brash-case brash-pack "${engines[@]}" brash-post; do
   [ -x "$bin/$exe" ] || { echo "rank_ensemble: $bin/$exe not found (build first, or set BRASH_BIN)" >&2; exit 2; }
@@ -58,9 +59,9 @@ run_one() {  # seed, side
   rm -rf "$run"
   echo "== seed $1, $2 -> $run ($(date +%H:%M:%S))"
   if is_ode "$2"; then
-    local np ode_args=(); np="$(np_of "$2")"
-    if [[ "$np" == ode@*@* ]]; then np="${np#ode@}"; ode_args=(--dt "${np%@*}" --iterations "${np#*@}")
-    elif [[ "$np" == ode@* ]]; then ode_args=(--dt "${np#ode@}"); fi
+    local dt it ode_args=(); dt="$(ode_field "$2" 1)"; it="$(ode_field "$2" 2)"
+    [ -n "$dt" ] && ode_args+=(--dt "$dt")
+    [ -n "$it" ] && ode_args+=(--iterations "$it")
     { "$bin/brash-ode" "$case_dir" --out "$run" "${ode_args[@]}" --no-progress && "$bin/brash-post" "$run"; } > "$run.log" 2>&1 ||
       echo "   seed $1, $2 failed (exit $?): see $run.log"
   else

@@ -197,7 +197,7 @@ RunOptions options_from_meta(const fs::path& run_dir, const RunOptions& cli) {
     o.stepper.max_contacts_per_pair = j.at("max_contacts_per_pair");
     o.stepper.angular_damping = j.at("angular_damping");
     // Runs before the switch existed used sap; grid gives the same contacts (see world.hpp), so they go on with it.
-    o.stepper.broad_phase = j.value("broad_phase", "grid") == to_string(BroadPhase::Sap) ? BroadPhase::Sap : BroadPhase::Grid;
+    o.stepper.broad_phase = j.value("broad_phase", to_string(BroadPhase::Grid)) == to_string(BroadPhase::Sap) ? BroadPhase::Sap : BroadPhase::Grid;
     o.skips.auto_disable = j.at("auto_disable");
     o.skips.disable_linear_m_s = j.at("disable_linear_m_s");
     o.skips.disable_angular_rad_s = j.at("disable_angular_rad_s");
