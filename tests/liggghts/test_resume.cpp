@@ -52,10 +52,12 @@ double mean_resistance(const std::vector<Row>& rows, double t0) {
 }  // namespace
 
 namespace {
-// Waits up to 60 s for the first periodic restart file of a run started in the background.
-bool wait_for_restart_file(const fs::path& run) {
+// Waits up to 60 s until a run started in the background has a complete periodic restart file to resume from.
+// LIGGGHTS writes a.restart, then b.restart one interval later: a exists from the moment it is opened (a signal
+// then can leave it empty or partial), so only once b exists is a known complete.
+bool wait_for_complete_restart_file(const fs::path& run) {
   for (int i = 0; i < 600; ++i) {
-    if (fs::exists(run / "restart/a.restart") || fs::exists(run / "restart/b.restart")) return true;
+    if (fs::exists(run / "restart/b.restart")) return true;
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }
   return false;
@@ -117,7 +119,7 @@ TEST(LiggghtsRunner, EarlyStopInAResumedRunFollowsTheRule) {
                             brash::test::runner_command(dir / "case", run) + "' > '" + (dir / "killed.log").string() +
                             "' 2>&1 &";
   ASSERT_EQ(std::system(start.c_str()), 0);
-  ASSERT_TRUE(wait_for_restart_file(run)) << "no restart file";
+  ASSERT_TRUE(wait_for_complete_restart_file(run)) << "no complete restart file";
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   const std::string pid = brash::test::read_text(dir / "pid");
   ASSERT_EQ(std::system(("kill -9 -" + pid.substr(0, pid.find('\n')) + " 2>/dev/null; sleep 0.5").c_str()), 0);
@@ -158,7 +160,7 @@ TEST(LiggghtsRunner, TermSignalToTheRunnerStopsTheEngineAndTheRunResumes) {
                             (dir / "pid").string() + "\"; wait $!; echo $? > \"" + (dir / "rc").string() + "\"' > '" +
                             (dir / "run.log").string() + "' 2>&1 &";
   ASSERT_EQ(std::system(start.c_str()), 0);
-  ASSERT_TRUE(wait_for_restart_file(run)) << "no restart file";
+  ASSERT_TRUE(wait_for_complete_restart_file(run)) << "no complete restart file";
   const std::string runner_pid = first_line(dir / "pid"), engine_pid = first_line(run / "engine.pid");
   ASSERT_FALSE(engine_pid.empty());
   ASSERT_EQ(std::system(("kill -TERM " + runner_pid).c_str()), 0);  // the runner only, not its process group
@@ -182,6 +184,46 @@ TEST(LiggghtsRunner, TermSignalToTheRunnerStopsTheEngineAndTheRunResumes) {
       << brash::test::read_text(dir / "resume.log");
   EXPECT_NE(brash::test::read_text(run / "meta.json").find("\"complete\""), std::string::npos);
   EXPECT_NEAR(read_force(run / "hull_force.csv").back().t, 0.6, 1e-9);
+  fs::remove_all(dir);
+}
+
+// SIGTERM before the first restart file: nothing can be resumed, and the run says so instead of offering --resume.
+TEST(LiggghtsRunner, TermSignalBeforeTheFirstRestartFileSaysRunAgain) {
+  const fs::path dir = brash::test::fresh_dir("sigterm_early");
+  write_small_case(dir / "case", "[0.3, 0.6]", "0.01", "");
+  const fs::path run = dir / "run";
+  // first restart file at 0.5 s of the 0.6 s run: seconds of wall time after the engine starts
+  const std::string start = "setsid bash -c '" + brash::test::runner_command(dir / "case", run) +
+                            " --restart-every 0.5 & echo $! > \"" + (dir / "pid").string() + "\"; wait $!; echo $? > \"" +
+                            (dir / "rc").string() + "\"' > '" + (dir / "run.log").string() + "' 2>&1 &";
+  ASSERT_EQ(std::system(start.c_str()), 0);
+  bool engine_up = false;
+  for (int i = 0; i < 600 && !engine_up; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    engine_up = fs::exists(run / "engine.pid") && !first_line(run / "engine.pid").empty();
+  }
+  ASSERT_TRUE(engine_up) << "the engine did not start within 60 s";
+  ASSERT_EQ(std::system(("kill -TERM " + first_line(dir / "pid")).c_str()), 0);
+  bool rc_written = false;
+  for (int i = 0; i < 300 && !rc_written; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    rc_written = fs::exists(dir / "rc") && !brash::test::read_text(dir / "rc").empty();
+  }
+  ASSERT_TRUE(rc_written) << "the runner did not exit within 30 s of SIGTERM";
+  ASSERT_FALSE(fs::exists(run / "restart/a.restart") && fs::file_size(run / "restart/a.restart") > 0)
+      << "signalled too late: the test needs no restart file yet";
+  EXPECT_EQ(std::stoi(brash::test::read_text(dir / "rc")), 128 + 15) << brash::test::read_text(dir / "run.log");
+  const std::string meta = brash::test::read_text(run / "meta.json");
+  EXPECT_NE(meta.find("\"interrupted\""), std::string::npos) << meta;
+  EXPECT_NE(meta.find("nothing to resume, run the case again"), std::string::npos) << meta;
+  EXPECT_EQ(meta.find("--resume"), std::string::npos) << meta;
+  const int rc = std::system((std::string("'") + BRASH_BIN_DIR + "/brash-liggghts-run' --resume '" + run.string() +
+                              "' --no-post > '" + (dir / "resume.log").string() + "' 2>&1")
+                                 .c_str());
+  EXPECT_NE(WEXITSTATUS(rc), 0);
+  EXPECT_NE(brash::test::read_text(dir / "resume.log").find("before its first one was written; run the case again"),
+            std::string::npos)
+      << brash::test::read_text(dir / "resume.log");
   fs::remove_all(dir);
 }
 
