@@ -5,7 +5,10 @@ particle dumps of a LIGGGHTS run (finished or still going).
 A floating two-layer bed with no end wall relaxes at its free end (the top layer's weight pushes the bottom layer
 out into open water); this prints, per dump, where that relaxation front is (the first 0.25 m strip, counted from
 the far end, whose pieces moved less than 1 cm on average from their packing positions), how many pieces have left
-the channel (x > length), and the bow's push ahead (the last strip ahead of the bow that moved more than 1 cm).
+the channel (x > length), the bow's push ahead (the last strip ahead of the bow that moved more than 1 cm), and how
+still the bed between them is: the median |vz| of the pieces more than 3 m ahead of the bow and short of the front,
+and the share of them faster than 5 mm/s (the far field's wake speed; docs/performance.md "The wake rule on the
+paper scene").
 Needs Debian's python3-numpy (hence /usr/bin/python3). Reads RUN_DIR/case.yaml for the channel length, the hull's
 start and the speed, and the case's packing file for the packing positions (piece id = packing row)."""
 import glob
@@ -44,12 +47,12 @@ dt = float(re.search(r'"dt_s": *([0-9.eE+-]+)', meta).group(1))
 dumps = sorted(glob.glob(os.path.join(run, 'particles', 'dump.*.txt')))
 if not dumps:
     sys.exit('%s: no particle dumps' % run)
-print('| t [s] | bow x [m] | far-end front at x0 [m] | pieces beyond x = %g m | push reaches (ahead of bow) [m] |'
-      % length)
-print('|---|---|---|---|---|')
+print('| t [s] | bow x [m] | far-end front at x0 [m] | pieces beyond x = %g m | push reaches (ahead of bow) [m] '
+      '| bed between: median abs(vz) [mm/s] | faster than 5 mm/s |' % length)
+print('|---|---|---|---|---|---|---|')
 for f in dumps[::every] + ([dumps[-1]] if (len(dumps) - 1) % every else []):
     t = int(f.split('.')[-2]) * dt
-    d = np.loadtxt(f, skiprows=9, usecols=(0, 1))
+    d = np.loadtxt(f, skiprows=9, usecols=(0, 1, 5, 6, 7))  # id x vx vy vz
     x0 = packing_x[d[:, 0].astype(int) - 1]
     moved = np.abs(d[:, 1] - x0)
     front = length
@@ -66,4 +69,8 @@ for f in dumps[::every] + ([dumps[-1]] if (len(dumps) - 1) % every else []):
             reach = a + 0.25
         else:
             break
-    print('| %.1f | %.2f | %.2f | %d | %.2f |' % (t, bow, front, (d[:, 1] > length).sum(), reach))
+    between = (x0 > bow + 3.0) & (x0 < front)
+    piece_speed = np.linalg.norm(d[between, 2:5], axis=1)
+    still = ('%.1f | %.0f %%' % (np.median(np.abs(d[between, 4])) * 1e3, 100 * np.mean(piece_speed > 5e-3))
+             if between.any() else '- | -')
+    print('| %.1f | %.2f | %.2f | %d | %.2f | %s |' % (t, bow, front, (d[:, 1] > length).sum(), reach, still))

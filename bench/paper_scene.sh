@@ -2,9 +2,12 @@
 # Benchmark on the paper scene itself: 1,000 steps from a restart file of a paper-case run directory
 # (brash-liggghts-run cases/jbc_ia_5kn ...; needs restart/a.restart or b.restart), timed in one sitting:
 #   far field on, 2 ranks  |  far field on, 1 rank  (parallel efficiency)  |  far field off, 2 ranks (its speed-up);
-# a run without the far field (the paper case's default since session 6) is timed on 2 and 1 ranks only.
+# a run without the far field (the paper case's default since session 6) is timed on 2 and 1 ranks, and with the
+# far field switched on (the run's case.yaml with speedups.farfield: true, i.e. its window and wake rule, input
+# written by brash-liggghts-run --prepare-only) on 2 ranks: what the far field would save on this scene, at this time.
 # The run's own in.lmp is used with dumps, restart and force output removed; "off" drops fix brash/farfield,
 # deletes group idle and its neighbour exclusion (every piece integrated, every pair computed).
+# SKIP_1RANK=1 leaves out the 1-rank timing (the slowest).
 #   bash bench/paper_scene.sh RUN_DIR [STEPS]        (skipped with a message when RUN_DIR has no restart)
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
@@ -20,26 +23,45 @@ work="$(mktemp -d /tmp/brash-paperbench-XXXX)"
 trap 'rm -rf "$work"' EXIT
 cp "$restart" "$work/start.restart"
 cp "$run_dir"/hull*.stl "$work/"
-sed -e 's|^read_data packing.data|read_restart start.restart|' -e '/^fix hf /d' -e '/^dump/d' -e '/^restart /d' \
-    -e '/^write_restart/d' -e "s/^run .*/run $steps/" "$run_dir/in.lmp" > "$work/in_on.lmp"
+strip() {  # in.lmp -> the same scene from start.restart, without outputs, for $steps steps
+  sed -e 's|^read_data packing.data|read_restart start.restart|' -e '/^fix hf /d' -e '/^dump/d' -e '/^restart /d' \
+      -e '/^write_restart/d' -e "s/^run .*/run $steps/" "$1"
+}
+strip "$run_dir/in.lmp" > "$work/in_on.lmp"
 sed -e '/^fix farfield/d' -e 's/^group idle subtract all all/group idle delete/' \
     -e 's/^neigh_modify delay 0 exclude group idle idle/neigh_modify delay 0/' "$work/in_on.lmp" > "$work/in_off.lmp"
+# The far field is off in the paper case since session 6: then the run's own scene is measured on 1 and 2 ranks, and
+# the same scene with the case's far field switched on.
+has_ff=0; grep -q '^fix farfield' "$work/in_on.lmp" && has_ff=1
+if [ "$has_ff" = 0 ]; then
+  mkdir -p "$work/ffcase"
+  sed -e 's/^  farfield: false/  farfield: true/' "$run_dir/case.yaml" > "$work/ffcase/case.yaml"
+  grep -q '^  farfield: true' "$work/ffcase/case.yaml" ||
+    { echo "paper_scene: $run_dir/case.yaml has no 'speedups: farfield: false' to switch on" >&2; exit 1; }
+  "$bin/brash-liggghts-run" "$work/ffcase" --np 2 --out "$work/ffrun" --prepare-only > "$work/ffprepare.log" 2>&1 ||
+    { cat "$work/ffprepare.log" >&2; exit 1; }
+  strip "$work/ffrun/in.lmp" > "$work/in_ff.lmp"
+fi
 cd "$work"
 loop() {  # $1 input, $2 ranks -> loop time [s]
   if [ "$2" = 1 ]; then "$bin/brash-liggghts" -in "$1" -log "log_$1_$2.txt" > /dev/null 2>&1
   else mpirun --allow-run-as-root --oversubscribe -np "$2" "$bin/brash-liggghts" -in "$1" -log "log_$1_$2.txt" > /dev/null 2>&1; fi
   awk '/^Loop time of/ {print $4; exit}' "log_$1_$2.txt"
 }
-# The far field is off in the paper case since session 6: then the run's own scene is measured on 1 and 2 ranks only.
-has_ff=0; grep -q '^fix farfield' in_on.lmp && has_ff=1
 label="far field on, "; [ "$has_ff" = 1 ] || label="run's scene,  "
-t_on2=$(loop in_on.lmp 2); t_on1=$(loop in_on.lmp 1); t_off2=0
-[ "$has_ff" = 1 ] && t_off2=$(loop in_off.lmp 2)
+t_on2=$(loop in_on.lmp 2); t_on1=0; t_off2=0; t_ff2=0
+[ "${SKIP_1RANK:-0}" = 1 ] || t_on1=$(loop in_on.lmp 1)
+if [ "$has_ff" = 1 ]; then t_off2=$(loop in_off.lmp 2); else t_ff2=$(loop in_ff.lmp 2); fi
 atoms=$(awk '/^Loop time of/ {print $12; exit}' log_in_on.lmp_2.txt)
-echo "== paper scene from $(basename "$restart") of $run_dir ($atoms spheres, $steps steps)"
-awk -v a="$t_on2" -v b="$t_on1" -v c="$t_off2" -v l="$label" 'BEGIN {
+t_restart=$(awk 'h { print $2; exit } $1 == "Step" { h = 1 }' log_in_on.lmp_2.txt)  # thermo: step, model time
+echo "== paper scene from $(basename "$restart") (t = $t_restart s) of $run_dir ($atoms spheres, $steps steps)"
+awk -v a="$t_on2" -v b="$t_on1" -v c="$t_off2" -v f="$t_ff2" -v l="$label" 'BEGIN {
   printf "%s2 ranks: %.1f s\n", l, a;
-  printf "%s1 rank : %.1f s   parallel efficiency 2 ranks: %.0f %%\n", l, b, 100 * b / (2 * a);
+  if (b > 0) printf "%s1 rank : %.1f s   parallel efficiency 2 ranks: %.0f %%\n", l, b, 100 * b / (2 * a);
   if (c > 0) printf "far field off, 2 ranks: %.1f s   far-field speed-up: %.2fx\n", c, c / a;
-  else print "(far field off in this run: no far-field comparison)";
+  if (f > 0) printf "far field on (case window + wake rule), 2 ranks: %.1f s   far-field speed-up: %.2fx\n", f, a / f;
 }'
+# the far field's idle pieces (thermo's last column, f_farfield[1]) at the first and the last thermo line
+[ "$t_ff2" = 0 ] || awk -v n="$atoms" '$1 == "Step" { h = 1; next } h && /^ *[0-9]/ { if (first == "") first = $NF; last = $NF }
+  /^Loop time/ { h = 0 } END { printf "  idle pieces with the far field: %d (%.0f %%) at the start, %d (%.0f %%) at the end\n",
+  first, 100 * first / n, last, 100 * last / n }' log_in_ff.lmp_2.txt
