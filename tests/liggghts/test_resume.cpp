@@ -53,8 +53,8 @@ double mean_resistance(const std::vector<Row>& rows, double t0) {
 
 namespace {
 // Waits up to 60 s until a run started in the background has a complete periodic restart file to resume from.
-// LIGGGHTS writes a.restart, then b.restart one interval later: a exists from the moment it is opened (a signal
-// then can leave it empty or partial), so only once b exists is a known complete.
+// LIGGGHTS writes a.restart, then b.restart one interval later: a exists from the moment it is opened (a
+// signal then can leave it empty or partial), so only once b exists is a known complete.
 bool wait_for_complete_restart_file(const fs::path& run) {
   for (int i = 0; i < 600; ++i) {
     if (fs::exists(run / "restart/b.restart")) return true;
@@ -187,15 +187,17 @@ TEST(LiggghtsRunner, TermSignalToTheRunnerStopsTheEngineAndTheRunResumes) {
   fs::remove_all(dir);
 }
 
-// SIGTERM before the first restart file: nothing can be resumed, and the run says so instead of offering --resume.
+// SIGTERM before the first restart file: nothing can be resumed, and the run says so instead of offering
+// --resume.
 TEST(LiggghtsRunner, TermSignalBeforeTheFirstRestartFileSaysRunAgain) {
   const fs::path dir = brash::test::fresh_dir("sigterm_early");
   write_small_case(dir / "case", "[0.3, 0.6]", "0.01", "");
   const fs::path run = dir / "run";
   // first restart file at 0.5 s of the 0.6 s run: seconds of wall time after the engine starts
   const std::string start = "setsid bash -c '" + brash::test::runner_command(dir / "case", run) +
-                            " --restart-every 0.5 & echo $! > \"" + (dir / "pid").string() + "\"; wait $!; echo $? > \"" +
-                            (dir / "rc").string() + "\"' > '" + (dir / "run.log").string() + "' 2>&1 &";
+                            " --restart-every 0.5 & echo $! > \"" + (dir / "pid").string() +
+                            "\"; wait $!; echo $? > \"" + (dir / "rc").string() + "\"' > '" +
+                            (dir / "run.log").string() + "' 2>&1 &";
   ASSERT_EQ(std::system(start.c_str()), 0);
   bool engine_up = false;
   for (int i = 0; i < 600 && !engine_up; ++i) {
@@ -212,17 +214,19 @@ TEST(LiggghtsRunner, TermSignalBeforeTheFirstRestartFileSaysRunAgain) {
   ASSERT_TRUE(rc_written) << "the runner did not exit within 30 s of SIGTERM";
   ASSERT_FALSE(fs::exists(run / "restart/a.restart") && fs::file_size(run / "restart/a.restart") > 0)
       << "signalled too late: the test needs no restart file yet";
-  EXPECT_EQ(std::stoi(brash::test::read_text(dir / "rc")), 128 + 15) << brash::test::read_text(dir / "run.log");
+  EXPECT_EQ(std::stoi(brash::test::read_text(dir / "rc")), 128 + 15)
+      << brash::test::read_text(dir / "run.log");
   const std::string meta = brash::test::read_text(run / "meta.json");
   EXPECT_NE(meta.find("\"interrupted\""), std::string::npos) << meta;
   EXPECT_NE(meta.find("nothing to resume, run the case again"), std::string::npos) << meta;
   EXPECT_EQ(meta.find("--resume"), std::string::npos) << meta;
-  const int rc = std::system((std::string("'") + BRASH_BIN_DIR + "/brash-liggghts-run' --resume '" + run.string() +
-                              "' --no-post > '" + (dir / "resume.log").string() + "' 2>&1")
+  const int rc = std::system((std::string("'") + BRASH_BIN_DIR + "/brash-liggghts-run' --resume '" +
+                              run.string() + "' --no-post > '" + (dir / "resume.log").string() + "' 2>&1")
                                  .c_str());
   EXPECT_NE(WEXITSTATUS(rc), 0);
-  EXPECT_NE(brash::test::read_text(dir / "resume.log").find("before its first one was written; run the case again"),
-            std::string::npos)
+  EXPECT_NE(
+      brash::test::read_text(dir / "resume.log").find("before its first one was written; run the case again"),
+      std::string::npos)
       << brash::test::read_text(dir / "resume.log");
   fs::remove_all(dir);
 }

@@ -348,9 +348,10 @@ int main(int argc, char** argv) {
         throw InputError(run_dir.string() + ": the run is complete; nothing to resume");
       restarts = restart_candidates(run_dir);
       if (restarts.empty())
-        throw InputError(run_dir.string() +
-                         ": no restart file (restart/a.restart, restart/b.restart) to resume from: the run stopped "
-                         "before its first one was written; run the case again");
+        throw InputError(
+            run_dir.string() +
+            ": no restart file (restart/a.restart, restart/b.restart) to resume from: the run stopped "
+            "before its first one was written; run the case again");
     } else {
       const fs::path dir = out_dir.empty() ? brash::run::make_run_dir(runs_root, c.name, "liggghts",
                                                                       std::string(to_string(c.fluid.model)))
@@ -459,11 +460,13 @@ int main(int argc, char** argv) {
       // a signal before the first periodic restart file leaves nothing to resume from: say so, not "--resume"
       meta["reason"] =
           restart_candidates(run_dir).empty()
-              ? fmt::format("signal {} ({}): the engine was stopped before its first restart file was written; "
-                            "nothing to resume, run the case again",
-                            static_cast<int>(g_signal), strsignal(g_signal))
-              : fmt::format("signal {} ({}): the engine was stopped; continue with brash-liggghts-run --resume {}",
-                            static_cast<int>(g_signal), strsignal(g_signal), run_dir.string());
+              ? fmt::format(
+                    "signal {} ({}): the engine was stopped before its first restart file was written; "
+                    "nothing to resume, run the case again",
+                    static_cast<int>(g_signal), strsignal(g_signal))
+              : fmt::format(
+                    "signal {} ({}): the engine was stopped; continue with brash-liggghts-run --resume {}",
+                    static_cast<int>(g_signal), strsignal(g_signal), run_dir.string());
       brash::run::write_meta(run_dir, meta);
       std::cerr << "[brash-liggghts] interrupted: " << meta["reason"].get<std::string>() << "\n";
       return 128 + g_signal;
