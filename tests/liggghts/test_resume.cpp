@@ -66,6 +66,27 @@ std::string first_line(const fs::path& file) {
   const std::string text = brash::test::read_text(file);
   return text.substr(0, text.find('\n'));
 }
+// `brash-liggghts-run --resume RUN --no-post`, its output into log; returns std::system's status.
+int resume_runner(const fs::path& run, const fs::path& log) {
+  return std::system((std::string("'") + BRASH_BIN_DIR + "/brash-liggghts-run' --resume '" + run.string() +
+                      "' --no-post > '" + log.string() + "' 2>&1")
+                         .c_str());
+}
+// Starts the runner in the background (a new session), its pid into dir/pid and its exit code into dir/rc.
+void start_runner_recording_exit(const fs::path& dir, const fs::path& run, const std::string& extra_args) {
+  const std::string start = "setsid bash -c '" + brash::test::runner_command(dir / "case", run) + extra_args +
+                            " & echo $! > \"" + (dir / "pid").string() + "\"; wait $!; echo $? > \"" +
+                            (dir / "rc").string() + "\"' > '" + (dir / "run.log").string() + "' 2>&1 &";
+  ASSERT_EQ(std::system(start.c_str()), 0);
+}
+// Waits up to 30 s for dir/rc written by start_runner_recording_exit.
+bool wait_for_exit_code(const fs::path& dir) {
+  for (int i = 0; i < 300; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    if (fs::exists(dir / "rc") && !brash::test::read_text(dir / "rc").empty()) return true;
+  }
+  return false;
+}
 // The quick case, narrowed and shortened (liggghts_runner.h): 0.6 s.
 void write_small_case(const fs::path& case_dir, const std::string& window, const std::string& output_interval,
                       const std::string& extra) {
@@ -125,11 +146,7 @@ TEST(LiggghtsRunner, EarlyStopInAResumedRunFollowsTheRule) {
   ASSERT_EQ(std::system(("kill -9 -" + pid.substr(0, pid.find('\n')) + " 2>/dev/null; sleep 0.5").c_str()), 0);
   ASSERT_EQ(brash::test::read_text(run / "meta.json").find("\"early_stop\""), std::string::npos)
       << "stopped before the kill: the test needs a kill before the checks start";
-  ASSERT_EQ(std::system((std::string("'") + BRASH_BIN_DIR + "/brash-liggghts-run' --resume '" + run.string() +
-                         "' --no-post > '" + (dir / "resume.log").string() + "' 2>&1")
-                            .c_str()),
-            0)
-      << brash::test::read_text(dir / "resume.log");
+  ASSERT_EQ(resume_runner(run, dir / "resume.log"), 0) << brash::test::read_text(dir / "resume.log");
   const std::string meta = brash::test::read_text(run / "meta.json");
   EXPECT_NE(meta.find("\"complete\""), std::string::npos) << meta;
   const auto rows = read_force(run / "hull_force.csv");
@@ -156,20 +173,12 @@ TEST(LiggghtsRunner, TermSignalToTheRunnerStopsTheEngineAndTheRunResumes) {
   const fs::path dir = brash::test::fresh_dir("sigterm");
   write_small_case(dir / "case", "[0.3, 0.6]", "0.01", "");
   const fs::path run = dir / "run";
-  const std::string start = "setsid bash -c '" + brash::test::runner_command(dir / "case", run) + " & echo $! > \"" +
-                            (dir / "pid").string() + "\"; wait $!; echo $? > \"" + (dir / "rc").string() + "\"' > '" +
-                            (dir / "run.log").string() + "' 2>&1 &";
-  ASSERT_EQ(std::system(start.c_str()), 0);
+  start_runner_recording_exit(dir, run, "");
   ASSERT_TRUE(wait_for_complete_restart_file(run)) << "no complete restart file";
   const std::string runner_pid = first_line(dir / "pid"), engine_pid = first_line(run / "engine.pid");
   ASSERT_FALSE(engine_pid.empty());
   ASSERT_EQ(std::system(("kill -TERM " + runner_pid).c_str()), 0);  // the runner only, not its process group
-  bool rc_written = false;
-  for (int i = 0; i < 300 && !rc_written; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    rc_written = fs::exists(dir / "rc") && !brash::test::read_text(dir / "rc").empty();
-  }
-  ASSERT_TRUE(rc_written) << "the runner did not exit within 30 s of SIGTERM";
+  ASSERT_TRUE(wait_for_exit_code(dir)) << "the runner did not exit within 30 s of SIGTERM";
   EXPECT_EQ(std::stoi(brash::test::read_text(dir / "rc")), 128 + 15) << brash::test::read_text(dir / "run.log");
   std::this_thread::sleep_for(std::chrono::milliseconds(500));
   EXPECT_NE(std::system(("kill -0 " + engine_pid + " 2>/dev/null").c_str()), 0) << "the engine runs on orphaned";
@@ -177,11 +186,7 @@ TEST(LiggghtsRunner, TermSignalToTheRunnerStopsTheEngineAndTheRunResumes) {
   EXPECT_NE(meta.find("\"interrupted\""), std::string::npos) << meta;
   EXPECT_NE(meta.find("--resume " + run.string()), std::string::npos) << meta;
   EXPECT_FALSE(fs::exists(run / "restart/final.restart")) << "signalled too late: the run had finished";
-  ASSERT_EQ(std::system((std::string("'") + BRASH_BIN_DIR + "/brash-liggghts-run' --resume '" + run.string() +
-                         "' --no-post > '" + (dir / "resume.log").string() + "' 2>&1")
-                            .c_str()),
-            0)
-      << brash::test::read_text(dir / "resume.log");
+  ASSERT_EQ(resume_runner(run, dir / "resume.log"), 0) << brash::test::read_text(dir / "resume.log");
   EXPECT_NE(brash::test::read_text(run / "meta.json").find("\"complete\""), std::string::npos);
   EXPECT_NEAR(read_force(run / "hull_force.csv").back().t, 0.6, 1e-9);
   fs::remove_all(dir);
@@ -194,11 +199,7 @@ TEST(LiggghtsRunner, TermSignalBeforeTheFirstRestartFileSaysRunAgain) {
   write_small_case(dir / "case", "[0.3, 0.6]", "0.01", "");
   const fs::path run = dir / "run";
   // first restart file at 0.5 s of the 0.6 s run: seconds of wall time after the engine starts
-  const std::string start = "setsid bash -c '" + brash::test::runner_command(dir / "case", run) +
-                            " --restart-every 0.5 & echo $! > \"" + (dir / "pid").string() +
-                            "\"; wait $!; echo $? > \"" + (dir / "rc").string() + "\"' > '" +
-                            (dir / "run.log").string() + "' 2>&1 &";
-  ASSERT_EQ(std::system(start.c_str()), 0);
+  start_runner_recording_exit(dir, run, " --restart-every 0.5");
   bool engine_up = false;
   for (int i = 0; i < 600 && !engine_up; ++i) {
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
@@ -206,12 +207,7 @@ TEST(LiggghtsRunner, TermSignalBeforeTheFirstRestartFileSaysRunAgain) {
   }
   ASSERT_TRUE(engine_up) << "the engine did not start within 60 s";
   ASSERT_EQ(std::system(("kill -TERM " + first_line(dir / "pid")).c_str()), 0);
-  bool rc_written = false;
-  for (int i = 0; i < 300 && !rc_written; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    rc_written = fs::exists(dir / "rc") && !brash::test::read_text(dir / "rc").empty();
-  }
-  ASSERT_TRUE(rc_written) << "the runner did not exit within 30 s of SIGTERM";
+  ASSERT_TRUE(wait_for_exit_code(dir)) << "the runner did not exit within 30 s of SIGTERM";
   ASSERT_FALSE(fs::exists(run / "restart/a.restart") && fs::file_size(run / "restart/a.restart") > 0)
       << "signalled too late: the test needs no restart file yet";
   EXPECT_EQ(std::stoi(brash::test::read_text(dir / "rc")), 128 + 15)
@@ -220,9 +216,7 @@ TEST(LiggghtsRunner, TermSignalBeforeTheFirstRestartFileSaysRunAgain) {
   EXPECT_NE(meta.find("\"interrupted\""), std::string::npos) << meta;
   EXPECT_NE(meta.find("nothing to resume, run the case again"), std::string::npos) << meta;
   EXPECT_EQ(meta.find("--resume"), std::string::npos) << meta;
-  const int rc = std::system((std::string("'") + BRASH_BIN_DIR + "/brash-liggghts-run' --resume '" +
-                              run.string() + "' --no-post > '" + (dir / "resume.log").string() + "' 2>&1")
-                                 .c_str());
+  const int rc = resume_runner(run, dir / "resume.log");
   EXPECT_NE(WEXITSTATUS(rc), 0);
   EXPECT_NE(
       brash::test::read_text(dir / "resume.log").find("before its first one was written; run the case again"),
@@ -262,17 +256,10 @@ TEST(LiggghtsResume, KilledRunResumesToTheSameResult) {
                             brash::test::runner_command(dir / "case", killed) + "' > '" +
                             (dir / "killed.log").string() + "' 2>&1 &";
   ASSERT_EQ(std::system(start.c_str()), 0);
-  bool both = false;
-  for (int i = 0; i < 600 && !both; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    both = fs::exists(killed / "restart/a.restart") && fs::exists(killed / "restart/b.restart");
-  }
-  ASSERT_TRUE(both) << "no second restart file";
+  ASSERT_TRUE(wait_for_complete_restart_file(killed)) << "no second restart file";
   // while it runs, a resume of the same directory is refused (it would write the same files)
   const fs::path busy = dir / "busy.log";
-  const int busy_rc = std::system((std::string("'") + BRASH_BIN_DIR + "/brash-liggghts-run' --resume '" +
-                                   killed.string() + "' --no-post > '" + busy.string() + "' 2>&1")
-                                      .c_str());
+  const int busy_rc = resume_runner(killed, busy);
   EXPECT_NE(WEXITSTATUS(busy_rc), 0);
   EXPECT_NE(brash::test::read_text(busy).find("another process is running in this run directory"), std::string::npos)
       << brash::test::read_text(busy);
@@ -288,10 +275,7 @@ TEST(LiggghtsResume, KilledRunResumesToTheSameResult) {
   ASSERT_FALSE(so_far.empty());
   EXPECT_GE(so_far.back().t, 0.06 - 1e-9);  // at least up to the first restart time (a tenth of 0.6 s)
 
-  ASSERT_EQ(std::system((std::string("'") + BRASH_BIN_DIR + "/brash-liggghts-run' --resume '" +
-                         killed.string() + "' --no-post > '" + (dir / "resume.log").string() + "' 2>&1")
-                            .c_str()),
-            0);
+  ASSERT_EQ(resume_runner(killed, dir / "resume.log"), 0);
   EXPECT_NE(brash::test::read_text(killed / "meta.json").find("\"complete\""), std::string::npos);
 
   const auto a = read_force(dir / "full/hull_force.csv"), b = read_force(killed / "hull_force.csv");
