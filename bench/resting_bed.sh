@@ -17,6 +17,7 @@ case_src="$(cd "${CASE:-$here/cases/jbc_ia_5kn}" && pwd)"
 length="${LENGTH:-2.0}" duration="${DURATION:-3.0}" jobs="${JOBS:-2}"
 dt="$(awk '/^  timestep_s:/ { print $2; exit }' "$case_src/case.yaml")"
 half_dt="$(awk -v d="$dt" 'BEGIN { printf "%.6g", d / 2 }')"
+rho_ice="$(awk '/^  density_kg_m3:/ && ice { print $2; exit } /^ice:/ { ice = 1 } /^[a-z]/ && !/^ice:/ { ice = 0 }' "$case_src/case.yaml")"
 base="channel.length_m=$length,ship.speed_m_s=1.0e-9,run.duration_s=$duration,run.dump_interval_s=0.25"
 base="$base,ice.packing_file=generated/packing.csv"  # the shorter channel's own packing (same seed)
 variants=(
@@ -44,10 +45,10 @@ for v in "${variants[@]}"; do
 done
 for p in "${pids[@]}"; do wait "$p"; done
 echo "== resting bed: $(basename "$case_src")'s ice, channel $length m, $duration s, no ship (bench/resting_bed.sh)"
-/usr/bin/python3 - "$out" "$length" "${variants[@]%%:*}" <<'EOF'
+/usr/bin/python3 - "$out" "$length" "$rho_ice" "${variants[@]%%:*}" <<'EOF'
 import glob, os, sys
 import numpy as np
-out, length, names = sys.argv[1], float(sys.argv[2]), sys.argv[3:]
+out, length, rho_ice, names = sys.argv[1], float(sys.argv[2]), float(sys.argv[3]), sys.argv[4:]
 rows = []
 for name in names:
     files = sorted(glob.glob(os.path.join(out, name, 'run', 'particles', 'particles_*.csv')))
@@ -59,7 +60,7 @@ for name in names:
         if x0 is None:
             x0 = d[:, 0].copy()  # rows are sorted by id: the same piece in every dump
         mid = (x0 > length / 4) & (x0 < 3 * length / 4)
-        m = 900.0 * 4.0 / 3.0 * np.pi * d[mid, 1] ** 3  # ice mass [kg] (without the added mass)
+        m = rho_ice * 4.0 / 3.0 * np.pi * d[mid, 1] ** 3  # ice mass [kg] (without the added mass)
         ke.append(0.5 * np.sum(m * (d[mid, 2] ** 2 + d[mid, 3] ** 2 + d[mid, 4] ** 2)) * 1e6)
         kez.append(0.5 * np.sum(m * d[mid, 4] ** 2) * 1e6)
         vz.append(np.median(np.abs(d[mid, 4])) * 1e3)
