@@ -40,6 +40,17 @@ side_name() {
   fi
   echo "$np${e:+-$(printf '%s' "$e" | tr ',=' '__' | tr -cd 'A-Za-z0-9._-')}"
 }
+# human label of a side, as the table prints it: "2 ranks", "ODE, dt 5e-4 s, 40 iterations", plus the edits
+side_label() {
+  local e np dt it label; e="$(edits_of "$1")"; np="$(np_of "$1")"
+  if is_ode "$1"; then
+    dt="$(ode_field "$1" 1)"; it="$(ode_field "$1" 2)"
+    label="ODE${dt:+, dt $dt s}${it:+, $it iterations}"
+  else
+    label="$np rank$([ "$np" = 1 ] || echo s)"
+  fi
+  echo "$label${e:+, $e}"
+}
 engines=(brash-liggghts-run); for side in "${sides[@]}"; do is_ode "$side" && engines+=(brash-ode); done
 for exe in brash-case brash-pack "${engines[@]}" brash-post; do
   [ -x "$bin/$exe" ] || { echo "rank_ensemble: $bin/$exe not found (build first, or set BRASH_BIN)" >&2; exit 2; }
@@ -90,21 +101,14 @@ for side in "${sides[@]}"; do
   wait
 done
 /usr/bin/python3 - "$out" "$n_seeds" "$(basename "$case_src")" "${sides[0]}" "${sides[1]}" \
-  "$(side_name "${sides[0]}")" "$(side_name "${sides[1]}")" "${TOL_PCT:-1}" <<'EOF'
+  "$(side_name "${sides[0]}")" "$(side_name "${sides[1]}")" "${TOL_PCT:-1}" \
+  "$(side_label "${sides[0]}")" "$(side_label "${sides[1]}")" <<'EOF'
 import json, math, os, sys
-out, n, case, side_a, side_b, name_a, name_b, tol_pct = sys.argv[1], int(sys.argv[2]), *sys.argv[3:]
+out, n, case, side_a, side_b, name_a, name_b, tol_pct, la, lb = sys.argv[1], int(sys.argv[2]), *sys.argv[3:]
 tol = float(tol_pct) / 100
 # Student t 97.5 % quantiles for 1..30 degrees of freedom (then ~1.96)
 T = [12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228, 2.201, 2.179, 2.160, 2.145, 2.131,
      2.120, 2.110, 2.101, 2.093, 2.086, 2.080, 2.074, 2.069, 2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042]
-def label(side):
-    np_, _, edits = side.partition(':')
-    if np_.startswith('ode'):
-        parts = np_.split('@')[1:]
-        eng = 'ODE' + (', dt %s s' % parts[0] if parts else '') + (', %s iterations' % parts[1] if len(parts) > 1 else '')
-    else:
-        eng = '%s rank%s' % (np_, '' if np_ == '1' else 's')
-    return eng + (', ' + edits if edits else '')
 def wall_s(run):
     try:
         return float(json.load(open(os.path.join(out, run, 'meta.json')))['wall_time_s'])
@@ -118,7 +122,6 @@ def mean_N(run):
     if r.get('status') != 'complete':
         return None
     return r['resistance_model_N']['mean']
-la, lb = label(side_a), label(side_b)
 print('== %s, one packing seed per pair, mean resistance over its window, model scale' % case)
 print('| seed | A: %s [N] | B: %s [N] | (B - A) / mean |' % (la, lb))
 print('|---|---|---|---|')
