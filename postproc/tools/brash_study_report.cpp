@@ -60,6 +60,7 @@ struct Run {  // one run directory (several rows may share it)
   double window0 = 0, window1 = 0, t_last = 0, wall_s = 0, psteps = 0;
   std::optional<double> rch_kN, ratio;
   std::optional<double> lpp, beam, draft, alpha, phi2, awf;
+  json meta = json::object();  // the run's meta.json (empty object when missing or unreadable), read once
 };
 
 std::string trim(std::string s) {
@@ -143,17 +144,18 @@ std::optional<T> opt(const json& j, const json::json_pointer& p) {
 
 void load_report(Run& r) {
   if (r.exit_code && *r.exit_code != 0) r.problem = fmt::format("runner exited with code {}", *r.exit_code);
+  if (!r.run_dir.empty()) {
+    if (std::ifstream in(r.run_dir / "meta.json"); in) {
+      json m = json::parse(in, nullptr, /*allow_exceptions=*/false);
+      if (m.is_object()) r.meta = std::move(m);
+    }
+  }
   if (r.exit_text.rfind("in progress", 0) == 0) {
     r.in_progress = true;
     r.problem = r.exit_text;
     // engine and model of a run still going: from its meta.json (written at its start)
-    if (std::ifstream in(r.run_dir.empty() ? fs::path() : r.run_dir / "meta.json"); in) {
-      const json m = json::parse(in, nullptr, /*allow_exceptions=*/false);
-      if (m.is_object()) {
-        r.engine = m.value("engine", r.engine);
-        r.model = m.value("fluid_model", r.model);
-      }
-    }
+    r.engine = r.meta.value("engine", r.engine);
+    r.model = r.meta.value("fluid_model", r.model);
     return;
   }
   if (!r.exit_text.empty()) r.problem = "runner: " + r.exit_text;
@@ -452,15 +454,13 @@ void section_setup(Study& s, std::string& md) {
     if (r.run_dir.empty() || !seen.insert(r.run_dir).second || !fs::exists(r.run_dir / "case.yaml")) continue;
     Col col;
     col.ref = r.ref;
+    col.meta = r.meta;
     try {
       col.c = brash::load_case(r.run_dir / "case.yaml");
-      std::ifstream in(r.run_dir / "meta.json");
-      if (in) col.meta = json::parse(in, nullptr, /*allow_exceptions=*/false);
     } catch (const std::exception& e) {
       md += fmt::format("(set-up of {} not readable: {})\n\n", r.ref, e.what());
       continue;
     }
-    if (col.meta.is_discarded()) col.meta = json::object();
     col.head = fmt::format("{} ({} {})", r.ref, col.meta.value("engine", std::string("?")),
                            col.meta.value("fluid_model", std::string("?")));
     cols.push_back(std::move(col));
