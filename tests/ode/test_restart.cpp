@@ -221,9 +221,10 @@ TEST_F(Restart, GridAndSapBroadPhasesGiveTheSameRun) {
   EXPECT_LE(max_diff(s / "hull_force.csv", r / "hull_force.csv", 1, 4), 1e-6);
 }
 
-// speedups.early_stop_rel_ci in brash-ode: the smoke case with a row every 0.001 s (window [0.1, 0.2] s), run to the
-// end, then with early_stop_rel_ci 0.5: it stops exactly where the rule replayed on the full run's record says
-// (ODE runs are deterministic, so the stopped run is the full run's prefix), its record and case end there.
+// speedups.early_stop_rel_ci in brash-ode: the smoke case with a row every 0.001 s (window [0.1, 0.2] s), run
+// to the end, then with early_stop_rel_ci 0.5: it stops exactly where the rule replayed on the full run's
+// record says (ODE runs are deterministic, so the stopped run is the full run's prefix), its record and case
+// end there; and so does the run killed one step before the stop and resumed.
 TEST_F(Restart, EarlyStopEndsWhereTheRuleSays) {
   const fs::path cdir = kRoot / "es_case";
   fs::create_directories(cdir);
@@ -254,6 +255,25 @@ TEST_F(Restart, EarlyStopEndsWhereTheRuleSays) {
   for (std::size_t i = 0; i < stopped.size(); ++i) EXPECT_EQ(stopped[i], full[i]) << "row " << i;
   EXPECT_NE(slurp(kRoot / "es_run" / "case.yaml").find(fmt::format("duration_s: {}", stopped.back()[0])),
             std::string::npos);
+
+  // The same run stopped like a kill -9 one step before the stop, then resumed: the resumed run takes the
+  // rows written before its restart point (inside the window) from hull_force.csv and stops at the same row.
+  ASSERT_NE(meta.find("\"dt_s\": 0.0005"), std::string::npos) << meta;
+  const long stop_step = std::lround(replay.t_stop_s / 5e-4), restart_steps = 80;  // --restart-every 0.04 s
+  const long crash_step = stop_step - 1;
+  ASSERT_GT((crash_step / restart_steps) * restart_steps * 5e-4, 0.1 + 1e-9)
+      << "no restart file inside the window before the stop: the resume would not read window rows back";
+  const fs::path k = kRoot / "es_killed";
+  EXPECT_EQ(run(exe + k.string() + "' --restart-every 0.04 --crash-after-step " + std::to_string(crash_step) +
+                " > /dev/null 2>&1"),
+            137);
+  ASSERT_EQ(run(resume_cmd(k) + " 2>&1"), 0);
+  EXPECT_NE(slurp(k / "meta.json").find("\"early_stop\""), std::string::npos);
+  const auto resumed = read_csv(k / "hull_force.csv");
+  ASSERT_EQ(resumed.size(), stopped.size());
+  EXPECT_NEAR(resumed.back()[0], replay.t_stop_s, 1e-9);
+  for (std::size_t i = 0; i < resumed.size(); ++i)
+    EXPECT_NEAR(resumed[i][1], stopped[i][1], 1e-6) << "row " << i;
 }
 
 TEST_F(Restart, NoUsableRestartFileIsAClearError) {

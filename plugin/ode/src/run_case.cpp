@@ -328,6 +328,13 @@ RunResult run_case(const RunOptions& cli_options) {
   res.run_dir = run_dir;
   res.particles = spheres.size();
   std::string csv = "t_s,fx_N,fy_N,fz_N\n";
+  // (t [s], fx [N]) of csv's rows as written (the early stop's input: the same numbers a replay reads)
+  std::vector<std::pair<double, double>> csv_t_fx;
+  auto append_csv_row = [&](const std::string& row) {
+    const auto c1 = row.find(','), c2 = row.find(',', c1 + 1);
+    csv += row + "\n";
+    csv_t_fx.emplace_back(std::stod(row.substr(0, c1)), std::stod(row.substr(c1 + 1, c2 - c1 - 1)));
+  };
   std::string index = "step,t_s,file,hull_x_m\n";
   try {
     World w(fluid, st, Frictions{c.friction.ice_ice, c.friction.ice_hull, c.friction.ice_wall}, o.skips, o.implicit_mode);
@@ -406,7 +413,7 @@ RunResult run_case(const RunOptions& cli_options) {
       while (std::getline(in, line)) {
         if (line.empty()) continue;
         if (std::stod(line.substr(0, line.find(','))) <= t_r + 0.25 * st.dt_s) {
-          csv += line + "\n";
+          append_csv_row(line);
           ++kept;
         } else {
           ++dropped;
@@ -448,14 +455,8 @@ RunResult run_case(const RunOptions& cli_options) {
     const long n_check = std::max(1L, steps / 200);
     auto resistance_rows = [&](double t_now) {
       std::vector<double> r;
-      std::istringstream in(csv);
-      std::string line;
-      std::getline(in, line);  // header
-      while (std::getline(in, line)) {
-        const auto c1 = line.find(','), c2 = line.find(',', c1 + 1);
-        const double tr = std::stod(line.substr(0, c1));
-        if (tr >= es_t0 - 1e-12 && tr <= t_now + 1e-12) r.push_back(-std::stod(line.substr(c1 + 1, c2 - c1 - 1)));
-      }
+      for (const auto& [tr, fx] : csv_t_fx)
+        if (tr >= es_t0 - 1e-12 && tr <= t_now + 1e-12) r.push_back(-fx);
       return r;
     };
     bool es_stopped = false;
@@ -524,7 +525,7 @@ RunResult run_case(const RunOptions& cli_options) {
       }
       if (k % n_out == 0) {
         const Vec3 m = acc / double(n_out);
-        csv += fmt::format("{:.6f},{:.9g},{:.9g},{:.9g}\n", t, m.x(), m.y(), m.z());
+        append_csv_row(fmt::format("{:.6f},{:.9g},{:.9g},{:.9g}", t, m.x(), m.y(), m.z()));
         acc.setZero();
       }
       if (es_rel > 0 && k % n_check == 0 && k < steps &&
