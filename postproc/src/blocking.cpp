@@ -96,4 +96,15 @@ BlockingResult block_average(std::span<const double> x, std::size_t min_blocks) 
   return r;
 }
 
+HalvesTrend halves_trend(std::span<const double> x) {
+  if (x.size() < 4) throw std::invalid_argument("halves_trend: needs at least 4 samples");
+  HalvesTrend t;
+  const std::size_t h = x.size() / 2;
+  t.first = block_average(x.first(h));
+  t.second = block_average(x.subspan(h));
+  t.difference = t.second.mean - t.first.mean;
+  t.ci95 = std::hypot(t.first.ci95, t.second.ci95);
+  return t;
+}
+
 }  // namespace brash::post

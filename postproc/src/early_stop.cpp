@@ -19,10 +19,9 @@ EarlyStopVerdict early_stop_verdict(std::span<const double> r, double t, double 
     // The CI assumes a stationary record; a resistance still rising (or falling) would be stopped with a biased
     // mean. Stationarity check: the two halves' means agree within their combined 95 % CI and within the
     // precision asked for (the first alone let a ramp through on the quick case: docs/performance.md).
-    const std::size_t h = r.size() / 2;
-    const auto a = block_average(r.first(h)), b = block_average(r.subspan(h));
-    v.trend = b.mean - a.mean;
-    v.trend_ci95 = std::hypot(a.ci95, b.ci95);
+    const auto halves = halves_trend(r);
+    v.trend = halves.difference;
+    v.trend_ci95 = halves.ci95;
     v.stop = std::abs(v.trend) <= std::min(v.trend_ci95, rel_ci * std::abs(v.blocking.mean));
   }
   return v;

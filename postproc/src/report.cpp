@@ -157,10 +157,22 @@ RunAnalysis analyze_run(const std::filesystem::path& run_dir) {
   a.fx = block_average(slice(a.force.fx_N, w.i0, w.i1));
   a.fy = block_average(slice(a.force.fy_N, w.i0, w.i1));
   a.fz = block_average(slice(a.force.fz_N, w.i0, w.i1));
-  a.resistance = block_average(negated(slice(a.force.fx_N, w.i0, w.i1)));
+  const auto resistance_N = negated(slice(a.force.fx_N, w.i0, w.i1));
+  a.resistance = block_average(resistance_N);
   if (!a.resistance.plateau_found)
     a.notes.push_back("block averaging found no plateau of the variance of the mean: the CI95 is a lower bound "
                       "(window too short for the signal's correlation time)");
+  if (w.i1 - w.i0 >= kMinTrendSamples) {
+    const auto& t = *(a.resistance_trend = halves_trend(resistance_N));
+    if (t.drifts())
+      a.notes.push_back(fmt::format(
+          "the resistance is not stationary over the window: its second half averages {:.4g} N, the first "
+          "{:.4g} N "
+          "({:+.1f} %, outside the 95 % CI of the difference, ± {:.2g} N); the window mean depends on where "
+          "the "
+          "window ends, and its CI95 (block averaging assumes a stationary record) does not count that",
+          t.second.mean, t.first.mean, 100 * t.difference / std::abs(t.first.mean), t.ci95));
+  }
 
   const double lam3 = std::pow(a.case_.scale_lambda, 3);
   a.resistance_full_kN = a.resistance.mean * lam3 / 1000.0;
@@ -210,6 +222,12 @@ nlohmann::ordered_json report_json(const RunAnalysis& a) {
                              {"x", a.fx.mean}, {"y", a.fy.mean}, {"z", a.fz.mean},
                              {"ci95_xyz", {a.fx.ci95, a.fy.ci95, a.fz.ci95}},
                              {"blocking", blocking_json(a.resistance)}};
+  if (const auto& t = a.resistance_trend)
+    j["resistance_model_N"]["window_halves"] = {{"first_mean", t->first.mean},
+                                                {"second_mean", t->second.mean},
+                                                {"difference", t->difference},
+                                                {"difference_ci95", t->ci95},
+                                                {"drifts", t->drifts()}};
   j["lambda"] = a.case_.scale_lambda;
   j["resistance_full_kN"] = a.resistance_full_kN;
   j["resistance_full_ci95_kN"] = a.resistance_full_ci95_kN;
@@ -258,6 +276,12 @@ std::string report_markdown(const RunAnalysis& a) {
   md += fmt::format("± is the 95 % interval from block averaging (blocks of {} samples, {} blocks, plateau {}). "
                     "Full scale = model * lambda^3. Paper (full scale): added mass 393 kN, drag 378 kN.\n\n",
                     L.block_size, L.n_blocks, a.resistance.plateau_found ? "found" : "NOT found");
+  if (const auto& t = a.resistance_trend)
+    md += fmt::format(
+        "Stationarity: the window's first half averages {:.4f} ± {:.4f} N, the second {:.4f} ± {:.4f} N; "
+        "difference {:+.4f} ± {:.4f} N ({}).\n\n",
+        t->first.mean, t->first.ci95, t->second.mean, t->second.ci95, t->difference, t->ci95,
+        t->drifts() ? "**the record drifts**: outside its CI" : "within its CI: no drift detected");
   md += fmt::format("## FSICR channel resistance (ice class {})\n\n| parameter | value | source |\n|---|---|---|\n", a.fsicr.ice_class);
   for (const auto& [name, field] : fsicr_fields())
     md += fmt::format("| {} | {:.4g} | {} |\n", name, a.fsicr.params.*field, a.fsicr.source.at(name));

@@ -213,6 +213,12 @@ void load_report(Run& r) {
   }
   if (opt<bool>(j, P("/resistance_model_N/blocking/plateau_found")) == false)
     r.warnings.push_back("CI is a lower bound (no blocking plateau)");
+  if (opt<bool>(j, P("/resistance_model_N/window_halves/drifts")).value_or(false)) {
+    const double a = opt<double>(j, P("/resistance_model_N/window_halves/first_mean")).value_or(NAN);
+    const double d = opt<double>(j, P("/resistance_model_N/window_halves/difference")).value_or(NAN);
+    r.warnings.push_back(fmt::format("not stationary: the window's second half {:+.1f} % on its first",
+                                     100 * d / std::abs(a)));
+  }
 }
 
 // ---- numbers --------------------------------------------------------------------------------------

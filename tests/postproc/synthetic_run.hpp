@@ -1,14 +1,15 @@
 // Writes a synthetic run directory in the layout of docs/case_format.md, with known numbers, for the
 // postprocessor tests. Header-only test helper.
 #pragma once
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <random>
 #include <string>
 #include <vector>
-
-#include <fmt/format.h>
 
 namespace brash::post::testing {
 
@@ -17,6 +18,7 @@ struct SyntheticRun {
   double mean_resistance_N = 2.0;     // plateau value of -fx
   double fy_N = 0.1, fz_N = -0.5;     // plateau values of fy, fz
   double noise_N = 0.3, phi = 0.8;    // AR(1) noise on every component
+  double drift_N_per_s = 0;  // resistance rising linearly after t = 15 s (a record that is not stationary)
   std::string status = "complete";
   bool truncated_tail = false;        // last line cut without newline
   std::vector<double> snapshot_times_s{0.0, 20.0, 40.0};
@@ -87,7 +89,7 @@ inline void write_synthetic_run(const std::filesystem::path& dir, SyntheticRun& 
     ny = r.phi * ny + s * e(rng);
     nz = r.phi * nz + s * e(rng);
     r.t_s.push_back(t);
-    r.fx_N.push_back(-(r.mean_resistance_N * ramp + nx));
+    r.fx_N.push_back(-(r.mean_resistance_N * ramp + r.drift_N_per_s * std::max(0.0, t - 15.0) + nx));
     r.fy_N_series.push_back(r.fy_N * ramp + ny);
     r.fz_N_series.push_back(r.fz_N * ramp + nz);
     csv += fmt::format("{},{},{},{}\n", t, r.fx_N.back(), r.fy_N_series.back(), r.fz_N_series.back());

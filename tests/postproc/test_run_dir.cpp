@@ -91,6 +91,35 @@ TEST(RunDir, ReportJsonHasEveryKeyWithCorrectValues) {
   fs::remove_all(dir);
 }
 
+// The window's two halves: a stationary record shows no drift; one rising 0.02 N/s (+0.5 N over the 25 s
+// window, ~14 x the CI of the difference) is flagged in report.json, in the notes and in report.md.
+TEST(RunDir, ResistanceRisingThroughTheWindowIsFlagged) {
+  const auto dir = scratch("drift");
+  SyntheticRun r;
+  write_synthetic_run(dir, r);
+  auto j = run_cli(dir);
+  const auto& h = j["resistance_model_N"]["window_halves"];
+  EXPECT_FALSE(h["drifts"].get<bool>()) << h;
+  EXPECT_NEAR(h["difference"].get<double>(), 0.0, 0.1);
+  EXPECT_EQ(j["notes"].dump().find("not stationary"), std::string::npos) << j["notes"];
+
+  r = SyntheticRun{};
+  r.drift_N_per_s = 0.02;
+  write_synthetic_run(dir, r);
+  j = run_cli(dir);
+  const auto& d = j["resistance_model_N"]["window_halves"];
+  EXPECT_TRUE(d["drifts"].get<bool>()) << d;
+  // halves [15, 27.5] and [27.5, 40] s: their means differ by 0.02 N/s x 12.5 s = 0.25 N
+  EXPECT_NEAR(d["difference"].get<double>(), 0.25, 0.06);
+  EXPECT_NEAR(d["second_mean"].get<double>() - d["first_mean"].get<double>(), d["difference"].get<double>(),
+              1e-12);
+  EXPECT_NE(j["notes"].dump().find("not stationary over the window"), std::string::npos) << j["notes"];
+  std::ifstream md(dir / "report.md");
+  const std::string text((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("**the record drifts**"), std::string::npos);
+  fs::remove_all(dir);
+}
+
 TEST(RunDir, ShortRunShortensWindowAndSaysSo) {
   const auto dir = scratch("short");
   SyntheticRun r;

@@ -270,3 +270,38 @@ TEST(StudyReport, PaperSetUpTableComesFromEachRunsCaseAndMeta) {
             std::string::npos)
       << t;
 }
+
+// A run whose report.json says the window's record drifts (brash-post's window_halves) carries that in its
+// status, with the size of the drift; a stationary one does not.
+TEST(StudyReport, DriftingRecordIsFlaggedInItsStatus) {
+  const fs::path d = fresh_dir("drift");
+  write_report(d / "runs/a", "liggghts", "added_mass", 0.482, 11.6, 0.4);
+  write_report(d / "runs/b", "liggghts", "drag", 0.482, 11.0, 0.4);
+  json ja = json::parse(read(d / "runs/a/report.json")), jb = json::parse(read(d / "runs/b/report.json"));
+  ja["resistance_model_N"]["window_halves"] = {{"first_mean", 11.1},
+                                               {"second_mean", 12.09},
+                                               {"difference", 0.99},
+                                               {"difference_ci95", 0.38},
+                                               {"drifts", true}};
+  jb["resistance_model_N"]["window_halves"] = {{"first_mean", 11.0},
+                                               {"second_mean", 11.1},
+                                               {"difference", 0.1},
+                                               {"difference_ci95", 0.38},
+                                               {"drifts", false}};
+  std::ofstream(d / "runs/a/report.json") << ja.dump(2);
+  std::ofstream(d / "runs/b/report.json") << jb.dump(2);
+  std::string m = kHeader;
+  m += "a\tspeed\tU 0.482\tspeed_m_s\t0.482\t1\tjbc_bench\t0\truns/a\tbrash-liggghts-run a --model "
+       "added_mass\n";
+  m += "b\tspeed\tU 0.482\tspeed_m_s\t0.482\t1\tjbc_bench\t0\truns/b\tbrash-liggghts-run b --model drag\n";
+  std::ofstream(d / "manifest.tsv") << m;
+  ASSERT_EQ(
+      run_tool(d, fmt::format("'{}' --out '{}'", (d / "manifest.tsv").string(), (d / "study.md").string())),
+      0)
+      << read(d / "tool.log");
+  const std::string md = read(d / "study.md");
+  EXPECT_NE(md.find("| 11.60 ± 0.40 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("not stationary: the window's second half +8.9 % on its first"), std::string::npos) << md;
+  EXPECT_EQ(md.find("+0.9 % on its first"), std::string::npos) << md;  // b: within its CI, not flagged
+  fs::remove_all(d);
+}

@@ -17,6 +17,7 @@
 // N >= 2500: the estimated Var(mean), averaged over 40 seeds, is within 10 % of the exact value.
 // For N < ~250 tau_int it underestimates (phi 0.95, N 2500: about -13 %).
 #pragma once
+#include <cmath>
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -46,6 +47,18 @@ inline constexpr std::size_t kDefaultMinBlocks = 16;
 
 // Needs at least 2 samples (InputError otherwise is the caller's job; here: std::invalid_argument).
 BlockingResult block_average(std::span<const double> x, std::size_t min_blocks = kDefaultMinBlocks);
+
+// Stationarity of a record by its two halves: each half block averaged, the difference of their means (second
+// - first) with the combined 95 % CI. A difference outside its CI says the record drifts, which block
+// averaging (it assumes a stationary signal) neither sees nor counts in its CI. Needs >= 4 samples
+// (std::invalid_argument).
+struct HalvesTrend {
+  BlockingResult first, second;
+  double difference = 0;  // second.mean - first.mean
+  double ci95 = 0;        // hypot(first.ci95, second.ci95)
+  bool drifts() const { return std::abs(difference) > ci95; }
+};
+HalvesTrend halves_trend(std::span<const double> x);
 
 // Two-sided 95 % Student-t quantile t_{0.975, dof} (table for dof <= 30, Cornish-Fisher above).
 double student_t975(std::size_t dof);

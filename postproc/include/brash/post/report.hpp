@@ -66,12 +66,16 @@ struct RunAnalysis {
   WindowSelection window;
   BlockingResult resistance;  // of -fx, model scale [N]
   BlockingResult fx, fy, fz;  // force components of the ice on the hull [N]
+  std::optional<HalvesTrend> resistance_trend;  // the window's two halves (>= kMinTrendSamples samples)
   double resistance_full_kN = 0, resistance_full_ci95_kN = 0;
   FsicrSummary fsicr;
   std::optional<double> ratio_fsicr_to_sim;
   std::optional<BandCheck> band;   // set by brash-post's report when the case has a contact band and snapshots
   std::vector<std::string> notes;  // everything a reader must know (truncation, fallbacks, ...)
 };
+
+// Fewest window samples for the stationarity check (each half then has >= 2 x kDefaultMinBlocks samples).
+inline constexpr std::size_t kMinTrendSamples = 64;
 
 RunAnalysis analyze_run(const std::filesystem::path& run_dir);
 
