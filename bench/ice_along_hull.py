@@ -1,0 +1,70 @@
+#!/usr/bin/python3
+"""Where the ice is along the hull, per particle dump of a LIGGGHTS run (finished or still going): what the
+resistance history does not say by itself (issue 11: "where we differ, say why, backed by a run").
+    /usr/bin/python3 bench/ice_along_hull.py RUN_DIR [EVERY (2: every second dump)]
+Per dump, with the hull's x range from the case (bow at start_x + Lpp + speed t, Lpp long) and its beam B:
+  - ahead: the ice within 1 m ahead of the bow, in pieces per m2 over the undisturbed bed's (the bed's mean
+    areal density, pieces / channel area): above 1 = ice piled up ahead;
+  - alongside: the ice beside the hull (|y| > B/2, between stern and bow), same ratio;
+  - under: the pieces pushed down beneath the hull (|y| < B/2, between stern and bow, top of the piece deeper
+    than DEPTH = 5 cm below the water level), in the bow, middle and stern thirds of the length; they press on
+    the bottom with their buoyancy and rub on it as the hull moves;
+  - behind: pieces still deeper than DEPTH behind the stern (within 2 m).
+Needs Debian's python3-numpy (hence /usr/bin/python3). Reads RUN_DIR/case.yaml (channel, hull, ship)."""
+import glob
+import os
+import re
+import sys
+
+import numpy as np
+
+DEPTH = 0.05  # [m] below the water level: well below the undisturbed two-layer bed (0.035 m thick)
+
+run = sys.argv[1]
+every = int(sys.argv[2]) if len(sys.argv) > 2 else 2
+text = open(os.path.join(run, 'case.yaml')).read()
+
+
+def value(section, key, default=None):
+    m = re.search(r'^%s:\n(?:  .*\n)*?  %s: *"?([^"\n]+)"?' % (section, key), text, re.M)
+    if not m:
+        if default is not None:
+            return default
+        sys.exit('%s/case.yaml: no %s.%s' % (run, section, key))
+    return m.group(1)
+
+
+length = float(value('channel', 'length_m'))
+width = float(value('channel', 'width_m'))
+water = float(value('water', 'level_m', '0.0'))
+start_x = float(value('hull', 'start_x_m'))
+lpp = float(value('hull', 'lpp_m'))
+beam = float(value('hull', 'beam_m'))
+speed = float(value('ship', 'speed_m_s'))
+meta = open(os.path.join(run, 'meta.json')).read()
+dt = float(re.search(r'"dt_s": *([0-9.eE+-]+)', meta).group(1))
+dumps = sorted(glob.glob(os.path.join(run, 'particles', 'dump.*.txt')))
+if not dumps:
+    sys.exit('%s: no particle dumps' % run)
+
+print('| t [s] | bow x [m] | ahead (1 m) / bed | alongside / bed | under: bow third | middle third | stern third '
+      '| behind (2 m), deep |')
+print('|---|---|---|---|---|---|---|---|')
+density = None
+for f in dumps[::every] + ([dumps[-1]] if (len(dumps) - 1) % every else []):
+    t = int(f.split('.')[-2]) * dt
+    d = np.loadtxt(f, skiprows=9, usecols=(1, 2, 3, 4))  # x y z radius
+    x, y, top = d[:, 0], d[:, 1], d[:, 2] + d[:, 3]
+    if density is None:  # pieces per m2 of the undisturbed bed
+        density = len(d) / (length * width)
+    bow = start_x + lpp + speed * t
+    stern = bow - lpp
+    inside = (x > stern) & (x < bow)
+    ahead = ((x >= bow) & (x < bow + 1.0)).sum() / (1.0 * width) / density
+    side_area = max(1e-9, (min(bow, length) - max(stern, 0.0))) * (width - beam)
+    alongside = (inside & (np.abs(y) > 0.5 * beam)).sum() / side_area / density if bow > 0 else float('nan')
+    deep = top < water - DEPTH
+    under = inside & (np.abs(y) < 0.5 * beam) & deep
+    thirds = [(under & (x > bow - (k + 1) * lpp / 3) & (x <= bow - k * lpp / 3)).sum() for k in range(3)]
+    behind = (deep & (x <= stern) & (x > stern - 2.0)).sum()
+    print('| %.1f | %.2f | %.2f | %.2f | %d | %d | %d | %d |' % (t, bow, ahead, alongside, *thirds, behind))
