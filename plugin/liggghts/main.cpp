@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "fix_brash_exit.h"
 #include "fix_brash_farfield.h"
 #include "fix_brash_guard.h"
 #include "fix_icefluid.h"
@@ -28,6 +29,7 @@ int main(int argc, char** argv) {
   brash::liggghts::register_fix_style<brash::liggghts::FixIceFluid>(lmp, "icefluid");
   brash::liggghts::register_fix_style<brash::liggghts::FixBrashFarfield>(lmp, "brash/farfield");
   brash::liggghts::register_fix_style<brash::liggghts::FixBrashGuard>(lmp, "brash/guard");
+  brash::liggghts::register_fix_style<brash::liggghts::FixBrashExit>(lmp, "brash/exit");
   lmp->input->file();
   delete lmp;
   MPI_Finalize();

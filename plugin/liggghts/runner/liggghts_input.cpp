@@ -93,7 +93,8 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
   const auto& sp = c.speedups;
   const std::string moving = sp.farfield ? "active" : "all";
   if (sp.farfield) s += "group active type 1\ngroup idle subtract all all\n";
-  s += fmt::format("neighbor {:.6g} bin\nneigh_modify delay 0{}\n", sp.neighbor_skin_d * c.ice.diameter_mean_m,
+  const double skin_m = sp.neighbor_skin_d * c.ice.diameter_mean_m;
+  s += fmt::format("neighbor {:.6g} bin\nneigh_modify delay 0{}\n", skin_m,
                    sp.farfield ? " exclude group idle idle" : "");
   if (!sp.symmetry_y) {
     s += fmt::format(
@@ -163,6 +164,10 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
     s += fmt::format(" hull {} {:.9g} 0 {:.9g} {:.9g} 0 0 max_penetration {:g}", opt.guard_hull_file, hull_x0,
                      -c.hull.draft_m, c.ship.speed_m_s, *lim.max_hull_penetration_d);
   s += "\n";
+  // pieces leaving through the channel's open ends (beyond the box's x-ends, away from the hull) are removed,
+  // one neighbour skin inside the guard's x range so that they go before the guard sees them
+  // (fix_brash_exit.h)
+  s += fmt::format("fix exit all brash/exit xlo {:.9g} xhi {:.9g}\n", gb[0] + skin_m, gb[1] - skin_m);
   // fluid forces last: implicit added mass scales the sum of all other forces
   s += fmt::format(
       "fix fl {} icefluid model {} treatment {} cd {:.9g} drag_law {} nu {:.9g} ca {} water_level {:.9g} "

@@ -1,0 +1,104 @@
+// fix brash/exit: see fix_brash_exit.h.
+#include "fix_brash_exit.h"
+
+#include <fmt/format.h>
+#include <mpi.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+#include "atom.h"
+#include "atom_vec.h"
+#include "comm.h"
+#include "error.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+namespace brash::liggghts {
+
+FixBrashExit::FixBrashExit(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) {
+  bool have_lo = false, have_hi = false;
+  for (int i = 3; i < narg; i += 2) {
+    const std::string key = arg[i];
+    if (i + 1 >= narg)
+      error->all(FLERR, fmt::format("fix brash/exit: keyword {} needs a value", key).c_str());
+    char* end = nullptr;
+    const double v = std::strtod(arg[i + 1], &end);
+    if (end == arg[i + 1] || *end != '\0')
+      error->all(FLERR, fmt::format("fix brash/exit: {} {}: not a number", key, arg[i + 1]).c_str());
+    if (key == "xlo")
+      xlo_ = v, have_lo = true;
+    else if (key == "xhi")
+      xhi_ = v, have_hi = true;
+    else
+      error->all(FLERR, fmt::format("fix brash/exit: unknown keyword {} (expected xlo, xhi)", key).c_str());
+  }
+  if (!have_lo || !have_hi) error->all(FLERR, "fix brash/exit: needs xlo XLO xhi XHI");
+  if (!(xlo_ < xhi_))
+    error->all(FLERR, fmt::format("fix brash/exit: xlo {} must be below xhi {}", xlo_, xhi_).c_str());
+  scalar_flag = 1;
+  global_freq = 1;
+  extscalar = 0;
+  restart_global = 1;
+}
+
+int FixBrashExit::setmask() {
+  return PRE_EXCHANGE;
+}
+
+void FixBrashExit::pre_exchange() {
+  int n = atom->nlocal;
+  int removed = 0;
+  for (int i = 0; i < n;) {
+    const double x = atom->x[i][0];
+    if ((atom->mask[i] & groupbit) && (x < xlo_ || x > xhi_)) {
+      atom->avec->copy(n - 1, i, 1);  // the last local atom takes slot i (i is checked again)
+      --n;
+      ++removed;
+    } else {
+      ++i;
+    }
+  }
+  int removed_all = 0;
+  MPI_Allreduce(&removed, &removed_all, 1, MPI_INT, MPI_SUM, world);
+  if (removed_all == 0) return;
+  atom->nlocal = n;
+  bigint nlocal = n;
+  MPI_Allreduce(&nlocal, &atom->natoms, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (atom->map_style) {
+    atom->nghost = 0;
+    atom->map_init();
+    atom->map_set();
+  }
+  removed_total_ += removed_all;
+  if (comm->me == 0) {
+    const std::string msg = fmt::format(
+        "fix brash/exit: step {}: {} piece(s) left the scene through the channel's ends (x < {:g} or x > "
+        "{:g} m); "
+        "{:.0f} in all\n",
+        update->ntimestep, removed_all, xlo_, xhi_, removed_total_);
+    if (screen) std::fputs(msg.c_str(), screen);
+    if (logfile) std::fputs(msg.c_str(), logfile);
+  }
+}
+
+double FixBrashExit::compute_scalar() {
+  return removed_total_;
+}
+
+void FixBrashExit::write_restart(FILE* fp) {
+  if (comm->me != 0) return;
+  const int size = sizeof(double);
+  std::fwrite(&size, sizeof(int), 1, fp);
+  std::fwrite(&removed_total_, sizeof(double), 1, fp);
+}
+
+void FixBrashExit::restart(char* buf) {
+  std::memcpy(&removed_total_, buf, sizeof(double));
+}
+
+}  // namespace brash::liggghts
