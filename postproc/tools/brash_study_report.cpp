@@ -315,12 +315,16 @@ void build(Study& s) {
 }
 
 // Run directories are shown relative to the working directory when they lie below it (repo-relative
-// paths when the study is generated from the repository root).
+// paths when the study is generated from the repository root). Lexically first: a run folder reached through
+// a symbolic link below the working directory (runs -> /elsewhere/runs) is still shown as runs/...
 std::string show_path(const fs::path& p) {
   if (p.empty()) return "";
+  const auto below = [](const fs::path& rel) { return !rel.empty() && *rel.begin() != ".."; };
+  const fs::path lexical = fs::absolute(p).lexically_normal().lexically_relative(fs::current_path());
+  if (below(lexical)) return lexical.string();
   std::error_code ec;
   const fs::path rel = fs::relative(p, fs::current_path(), ec);
-  if (!ec && !rel.empty() && *rel.begin() != "..") return rel.string();
+  if (!ec && below(rel)) return rel.string();
   return p.string();
 }
 
