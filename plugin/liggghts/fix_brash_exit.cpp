@@ -50,7 +50,39 @@ int FixBrashExit::setmask() {
   return PRE_EXCHANGE;
 }
 
+void FixBrashExit::setup_pre_exchange() {
+  expected_atoms_ = count_atoms();
+}
+
+long long FixBrashExit::count_atoms() const {
+  long long mine = atom->nlocal, all = 0;
+  MPI_Allreduce(&mine, &all, 1, MPI_LONG_LONG, MPI_SUM, world);
+  return all;
+}
+
+void FixBrashExit::post_run() {
+  check_no_atom_lost();
+}
+
+void FixBrashExit::check_no_atom_lost() {
+  const long long now = count_atoms();
+  if (now != expected_atoms_)
+    error->all(
+        FLERR,
+        fmt::format("fix brash/exit: step {}: {} atom(s) lost: they left the box elsewhere than through "
+                    "the channel's ends (bad dynamics; fix brash/guard checks more often with a "
+                    "smaller every)",
+                    update->ntimestep, expected_atoms_ - now)
+            .c_str());
+}
+
 void FixBrashExit::pre_exchange() {
+  // Every atom must still be on some rank: LIGGGHTS drops an atom outside a fixed boundary at an exchange
+  // (and re-counts natoms at thermo output under `thermo_modify lost ignore`, which the runner sets because
+  // `lost error` counts against the run's initial number after a read_restart). So the count is kept here,
+  // from the run's set-up on (and checked at its end too), and an atom gone elsewhere than through the ends
+  // stops the run.
+  check_no_atom_lost();
   int n = atom->nlocal;
   int removed = 0;
   for (int i = 0; i < n;) {
@@ -75,6 +107,7 @@ void FixBrashExit::pre_exchange() {
     atom->map_set();
   }
   removed_total_ += removed_all;
+  expected_atoms_ -= removed_all;
   if (comm->me == 0) {
     const std::string msg = fmt::format(
         "fix brash/exit: step {}: {} piece(s) left the scene through the channel's ends (x < {:g} or x > "

@@ -26,14 +26,19 @@ class FixBrashExit : public LAMMPS_NS::Fix {
   FixBrashExit(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg);
 
   int setmask() override;
+  void setup_pre_exchange() override;
   void pre_exchange() override;
+  void post_run() override;
   double compute_scalar() override;
   void write_restart(FILE* fp) override;
   void restart(char* buf) override;
 
  private:
   double xlo_ = 0, xhi_ = 0;
-  double removed_total_ = 0;  // pieces removed since the run started (restart-safe)
+  long long count_atoms() const;  // atoms on all ranks
+  void check_no_atom_lost();
+  double removed_total_ = 0;      // pieces removed since the run started (restart-safe)
+  long long expected_atoms_ = 0;  // atoms there should be (set at each run's set-up, less those removed)
 };
 
 }  // namespace brash::liggghts
