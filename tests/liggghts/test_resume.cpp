@@ -275,7 +275,18 @@ TEST(LiggghtsResume, KilledRunResumesToTheSameResult) {
   ASSERT_FALSE(so_far.empty());
   EXPECT_GE(so_far.back().t, 0.06 - 1e-9);  // at least up to the first restart time (a tenth of 0.6 s)
 
-  ASSERT_EQ(resume_runner(killed, dir / "resume.log"), 0);
+  // the newest restart file cut short (a kill while it was written): the resume cannot read it and takes the
+  // other
+  const fs::path a_file = killed / "restart/a.restart", b_file = killed / "restart/b.restart";
+  const fs::path newest = fs::last_write_time(a_file) > fs::last_write_time(b_file) ? a_file : b_file;
+  const fs::path other = newest == a_file ? b_file : a_file;
+  fs::resize_file(newest, 100);
+  ASSERT_EQ(resume_runner(killed, dir / "resume.log"), 0) << brash::test::read_text(dir / "resume.log");
+  const std::string resume_log = brash::test::read_text(dir / "resume.log");
+  EXPECT_NE(resume_log.find("resume from restart/" + newest.filename().string() + " failed"),
+            std::string::npos)
+      << resume_log;
+  EXPECT_NE(resume_log.find("from restart/" + other.filename().string()), std::string::npos) << resume_log;
   EXPECT_NE(brash::test::read_text(killed / "meta.json").find("\"complete\""), std::string::npos);
 
   const auto a = read_force(dir / "full/hull_force.csv"), b = read_force(killed / "hull_force.csv");

@@ -182,6 +182,7 @@ struct EngineResult {
   double loop_time_s = 0;
   long steps = 0;
   long atoms = 0;
+  bool run_started = false;  // the thermo header came: the input (and a restart file) was read, the run began
   std::string error;
 };
 
@@ -219,7 +220,8 @@ EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, c
         if (g_signal != 0) ::kill(static_cast<pid_t>(pid), SIGTERM);  // a signal that came before the pid
       }
     }
-    if (line.rfind("Step ", 0) == 0 || line.find(" Step ") != std::string::npos) in_thermo = true;
+    if (line.rfind("Step ", 0) == 0 || line.find(" Step ") != std::string::npos)
+      in_thermo = res.run_started = true;
     if (line.rfind("ERROR", 0) == 0 && res.error.empty()) res.error = line.substr(0, line.find('\n'));
     if (line.rfind("Loop time of", 0) == 0) {
       in_thermo = false;
@@ -427,6 +429,9 @@ int main(int argc, char** argv) {
         res = run_engine(run_dir, ranks, run_duration, "in_resume.lmp", &early, restart_every_model_s);
         if (early.stopped || g_signal != 0 || (res.exit_code == 0 && res.error.empty())) break;
         std::cerr << "[brash-liggghts] resume from " << restart << " failed: " << res.error << "\n";
+        // An older restart file helps when this one could not be read; a run that began and then stopped (a
+        // guard, bad dynamics) would only stop again the same way from an earlier point.
+        if (res.run_started) break;
       }
     }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
