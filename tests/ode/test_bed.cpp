@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "brash/ode/bed.hpp"
+#include "brash/ode/restart.hpp"
 
 using namespace brash::ode;
 using brash::core::Vec3;
@@ -105,5 +106,46 @@ TEST(BroadPhase, LostSphereDoesNotStretchTheGrid) {
     EXPECT_EQ(w.stats().contacts_last, 1u) << to_string(bp);
     EXPECT_GT(w.velocity(1).x(), 0.0);  // pushed apart
     EXPECT_LT(w.velocity(0).x(), 0.0);
+  }
+}
+
+// World::retire (a piece that left through the channel's open ends): it is no longer stepped, given fluid
+// forces or collided with (an awake sphere moving through it passes unhindered), the others go on as without
+// it, and a save/load keeps it retired, in both broad phases.
+TEST(Retire, RetiredSphereIsFrozenOutOfTheSceneAndStaysSoAfterARestart) {
+  static OdeLibrary lib;
+  for (const BroadPhase bp : {BroadPhase::Grid, BroadPhase::Sap}) {
+    StepperSettings st;
+    st.broad_phase = bp;
+    brash::core::FluidParams p;
+    p.model = brash::core::FluidModel::AddedMass;
+    World w(p, st, Frictions{});
+    // A floating piece coasting in -x at 0.3 m/s (added_mass alone: nothing damps it) towards a resting one.
+    const std::size_t coasting = w.add_sphere(Vec3(0.1, 0, 0), 0.01, 900, Vec3(-0.3, 0, 0));
+    const std::size_t resting = w.add_sphere(Vec3(0, 0, 0), 0.01, 900);
+    w.retire(resting);
+    EXPECT_TRUE(w.retired(resting));
+    EXPECT_EQ(w.retired_count(), 1u);
+    const Vec3 x_resting = w.position(resting);
+    for (int k = 0; k < 1000; ++k) w.step();  // 0.5 s: the coasting piece passes through the retired one
+    EXPECT_EQ(w.position(resting), x_resting) << to_string(bp);
+    EXPECT_EQ(w.velocity(resting), Vec3::Zero());
+    EXPECT_LT(w.position(coasting).x(), -0.03) << to_string(bp);  // not stopped by the retired piece
+    EXPECT_NEAR(w.velocity(coasting).x(), -0.3, 0.03);
+    EXPECT_EQ(w.stats().particle_steps, 1000);  // only the coasting piece was stepped
+
+    restart::Writer out;
+    w.save_state(out);
+    World back(p, st, Frictions{});
+    back.add_sphere(Vec3(0.1, 0, 0), 0.01, 900);
+    back.add_sphere(Vec3(0, 0, 0), 0.01, 900);
+    restart::Reader in(out.bytes());
+    back.load_state(in);
+    EXPECT_FALSE(back.retired(coasting));
+    EXPECT_TRUE(back.retired(resting));
+    EXPECT_EQ(back.retired_count(), 1u);
+    for (int k = 0; k < 10; ++k) back.step(), w.step();
+    EXPECT_EQ(back.position(resting), x_resting);
+    EXPECT_EQ(back.position(coasting), w.position(coasting));
   }
 }

@@ -136,3 +136,21 @@ TEST_F(OdeGuard, PieceOutsideTheDomainAndAboveTheWater) {
                      R"(above zmax: z = 0\.4 > 0\.35 m \(jumped out of the water\))");
   EXPECT_EQ(step, 0);
 }
+
+TEST_F(OdeGuard, PieceBeyondTheChannelEndsLeavesTheSceneAndTheRunGoesOn) {
+  // The box's x range is [-7.496, 1.041] m: a piece at x = 1.2 m is ahead of the bow's end position (as one
+  // the bow pushed or that coasted out of the channel): it is retired at the first check, not a guard stop,
+  // and the rest of the run is the one without it.
+  const auto with = run(make_case("exit", "", "", "721,1.2,0,0,0.035\n"), "0.2");
+  const auto without = run(make_case("no_exit", "", "", ""), "0.2");
+  ASSERT_EQ(with.exit_code, 0) << with.err;
+  ASSERT_EQ(without.exit_code, 0) << without.err;
+  EXPECT_NE(with.meta.find("\"status\": \"complete\""), std::string::npos);
+  EXPECT_NE(with.meta.find("\"exits\": 1"), std::string::npos) << with.meta;
+  EXPECT_EQ(without.meta.find("\"exits\""), std::string::npos);
+  EXPECT_TRUE(
+      std::regex_search(slurp(with.run / "log.txt"),
+                        std::regex(R"(step 0 \(t = 0\.0000 s\): 1 piece\(s\) left the scene through the )"
+                                   R"(channel's ends \(x < -7\.49[0-9]* or x > 1\.04[0-9]* m\); 1 in all)")));
+  EXPECT_EQ(slurp(with.run / "hull_force.csv"), slurp(without.run / "hull_force.csv"));
+}

@@ -367,7 +367,8 @@ RunResult run_case(const RunOptions& cli_options) {
     logln(
         fmt::format("guards every {} steps: NaN/Inf; box x [{:.4g}, {:.4g}] y [{:.4g}, {:.4g}] z [{:.4g}, "
                     "{:.4g}] m; zmax {:.4g} m; "
-                    "ke_max {:.4g} J; hull penetration {}; (no dt check: ODE contacts are constraint joints, "
+                    "ke_max {:.4g} J; hull penetration {}; pieces beyond the x range leave the scene; (no dt "
+                    "check: ODE contacts are constraint joints, "
                     "see docs/stability.md)",
                     c.guards.every_steps, (*limits.box)[0], (*limits.box)[1], (*limits.box)[2],
                     (*limits.box)[3], (*limits.box)[4], (*limits.box)[5], *limits.z_max_m, *limits.ke_max_J,
@@ -490,11 +491,24 @@ RunResult run_case(const RunOptions& cli_options) {
     // The guards on every sphere (lowest id first); a stop is a GuardStop naming the step, the piece and the
     // cause. The hull's STL frame origin is the hull body's position lowered by the draft (body frame:
     // waterline z = 0).
+    // A piece beyond the box's x-ends left through the channel's open ends (behind the stern's start or ahead
+    // of the bow's end position: it can never reach the hull again; with added_mass alone nothing damps a
+    // loose piece's horizontal speed): it is retired (World::retire, as LIGGGHTS' fix brash/exit removes it),
+    // not a guard stop. Leaving through the sides or the top stays a stop.
+    const double exit_lo_m = (*limits.box)[0], exit_hi_m = (*limits.box)[1];
     auto check_guards = [&](long step) {
       guard::HullNow hull_now{hull_query.get(), w.hull_position() - Vec3(0, 0, c.hull.draft_m)};
+      std::size_t exits_now = 0;
       for (std::size_t i = 0; i < w.size(); ++i) {
+        if (w.retired(i)) continue;
         guard::Piece p;
         p.x_m = w.position(i);
+        if ((p.x_m.x() < exit_lo_m || p.x_m.x() > exit_hi_m) && p.x_m.allFinite() &&
+            w.velocity(i).allFinite()) {
+          w.retire(i);
+          ++exits_now;
+          continue;
+        }
         p.v_m_s = w.velocity(i);
         p.omega_rad_s = w.angular_velocity(i);
         p.radius_m = w.radius(i);
@@ -502,6 +516,13 @@ RunResult run_case(const RunOptions& cli_options) {
         if (const auto cause = guard::check_piece(p, limits, hull_query ? &hull_now : nullptr))
           throw GuardStop(
               guard::stop_message(step, double(step) * st.dt_s, static_cast<long>(i) + 1, *cause));
+      }
+      if (exits_now) {
+        logln(fmt::format(
+            "step {} (t = {:.4f} s): {} piece(s) left the scene through the channel's ends (x < {:.6g} "
+            "or x > {:.6g} m); {} in all",
+            step, double(step) * st.dt_s, exits_now, exit_lo_m, exit_hi_m, w.retired_count()));
+        meta["exits"] = w.retired_count();
       }
     };
     if (!o.resume) {

@@ -192,6 +192,7 @@ void World::update_cull() {
   const bool cull_geoms = skips_.cull && skips_.cull_geoms;
   std::size_t geoms_out = 0;
   for (auto& s : spheres_) {
+    if (s.retired) continue;
     const dReal* p = dBodyGetPosition(s.body);
     const double dy = std::abs(p[1] - h.y());
     const bool far = p[0] < lo || p[0] > hi || dy > side;
@@ -222,6 +223,21 @@ void World::update_cull() {
     }
   }
   stats_.geoms_out_max = std::max(stats_.geoms_out_max, geoms_out);
+}
+
+void World::retire(std::size_t i) {
+  auto& s = spheres_.at(i);
+  if (s.retired) return;
+  s.retired = true;
+  ++retired_count_;
+  dBodySetLinearVel(s.body, 0, 0, 0);
+  dBodySetAngularVel(s.body, 0, 0, 0);
+  dBodySetForce(s.body, 0, 0, 0);
+  dBodySetTorque(s.body, 0, 0, 0);
+  dBodySetAutoDisableFlag(s.body, 0);
+  dBodyDisable(s.body);
+  dGeomDisable(s.geom);
+  broad_spheres_stale_ = true;
 }
 
 void World::apply_fluid() {
@@ -503,6 +519,7 @@ void World::save_state(restart::Writer& w) const {
     w.put<std::uint8_t>(dBodyIsEnabled(s.body) ? 1 : 0);
     w.put<std::uint8_t>(dBodyGetAutoDisableFlag(s.body) ? 1 : 0);
     w.put<std::uint8_t>(s.culled ? 1 : 0);
+    w.put<std::uint8_t>(s.retired ? 1 : 0);
     w.put(s.state.velocity_prev_m_s);
     w.put<std::uint8_t>(s.state.has_prev ? 1 : 0);
     w.put(s.last.ca);
@@ -518,6 +535,7 @@ void World::load_state(restart::Reader& r) {
     throw std::runtime_error(fmt::format("restart holds {} spheres, {} walls, {} hull; the scene has {}, {}, {}", n, nw,
                                          hull ? "a" : "no", spheres_.size(), walls_.size(), hull_body_ ? "a" : "no"));
   restore_inexact_ = 0;
+  retired_count_ = 0;
   dRandSetSeed(static_cast<unsigned long>(r.get<std::uint64_t>()));
   stats_.steps = r.get<long>();
   stats_.particle_steps = r.get<long>();
@@ -544,6 +562,7 @@ void World::load_state(restart::Reader& r) {
     const bool enabled = r.get<std::uint8_t>() != 0;
     const bool adis = r.get<std::uint8_t>() != 0;
     s.culled = r.get<std::uint8_t>() != 0;
+    const bool retired = r.get<std::uint8_t>() != 0;
     s.state.velocity_prev_m_s = r.get_vec3();
     s.state.has_prev = r.get<std::uint8_t>() != 0;
     s.last = {};
@@ -563,6 +582,8 @@ void World::load_state(restart::Reader& r) {
     dBodySetAutoDisableFlag(s.body, adis ? 1 : 0);
     if (enabled) dBodyEnable(s.body);
     else dBodyDisable(s.body);
+    s.retired = false;
+    if (retired) retire(i);
   }
   if (!r.done()) throw std::runtime_error("restart payload has trailing bytes (written by a different brash-ode?)");
 }

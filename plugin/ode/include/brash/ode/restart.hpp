@@ -18,7 +18,7 @@
 
 namespace brash::ode::restart {
 
-constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kVersion = 2;  // 2: per-sphere "retired" flag (World::retire)
 
 class Writer {
  public:

@@ -141,6 +141,14 @@ class World {
   bool awake(std::size_t i) const;
   bool culled(std::size_t i) const { return spheres_[i].culled; }
 
+  // Takes a sphere out of the scene for good (a piece that left through the channel's open ends and can never
+  // reach the hull again): its body and geom are disabled and its velocities zeroed, so it is neither
+  // stepped, nor given fluid forces, nor seen by the broad phase; it stays at its last position in the
+  // particle files. Kept in restart files. The LIGGGHTS counterpart is fix brash/exit.
+  void retire(std::size_t i);
+  bool retired(std::size_t i) const { return spheres_[i].retired; }
+  std::size_t retired_count() const { return retired_count_; }
+
   void set_hull_velocity(const Vec3& v);
   bool has_hull() const { return hull_body_ != nullptr; }
   Vec3 hull_position() const;
@@ -164,8 +172,10 @@ class World {
     core::FluidState state;
     core::FluidOutput last;
     bool culled = false;
+    bool retired = false;  // retire()
   };
   double max_radius_m_ = 0;
+  std::size_t retired_count_ = 0;
   static void near_callback(void* data, dGeomID a, dGeomID b);
   void collide_pair(dGeomID a, dGeomID b);
   void collide_tagged(dGeomID a, std::size_t tag_a, dGeomID b, std::size_t tag_b);  // tags: see world.cpp
