@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """How far the ice has moved at the channel's free far end, and how far ahead of the bow the push reaches, in the
-particle dumps of a LIGGGHTS run (finished or still going).
+particle dumps of a run (LIGGGHTS while it goes; any engine when it is done).
     /usr/bin/python3 bench/channel_end_spread.py RUN_DIR [EVERY (3: every third dump)]
 A floating two-layer bed with no end wall relaxes at its free end (the top layer's weight pushes the bottom layer
 out into open water); this prints, per dump, where that relaxation front is (the first 0.25 m strip, counted from
@@ -11,12 +11,12 @@ and the share of them faster than 5 mm/s (the far field's wake speed; docs/perfo
 paper scene").
 Needs Debian's python3-numpy (hence /usr/bin/python3). Reads RUN_DIR/case.yaml for the channel length, the hull's
 start and the speed, and the case's packing file for the packing positions (piece id = packing row)."""
-import glob
 import os
 import re
 import sys
 
 import numpy as np
+from run_dumps import every_nth, load, snapshots
 
 run = sys.argv[1]
 every = int(sys.argv[2]) if len(sys.argv) > 2 else 3
@@ -44,15 +44,12 @@ if not (packing[:, columns.index('id')] == np.arange(1, len(packing) + 1)).all()
     sys.exit('%s: ids are not 1..N in file order' % packing_file)
 meta = open(os.path.join(run, 'meta.json')).read()
 dt = float(re.search(r'"dt_s": *([0-9.eE+-]+)', meta).group(1))
-dumps = sorted(glob.glob(os.path.join(run, 'particles', 'dump.*.txt')))
-if not dumps:
-    sys.exit('%s: no particle dumps' % run)
+dumps = snapshots(run, dt)
 print('| t [s] | bow x [m] | far-end front at x0 [m] | pieces beyond x = %g m | push reaches (ahead of bow) [m] '
       '| bed between: median abs(vz) [mm/s] | faster than 5 mm/s |' % length)
 print('|---|---|---|---|---|---|---|')
-for f in dumps[::every] + ([dumps[-1]] if (len(dumps) - 1) % every else []):
-    t = int(f.split('.')[-2]) * dt
-    d = np.loadtxt(f, skiprows=9, usecols=(0, 1, 5, 6, 7))  # id x vx vy vz
+for t, f in every_nth(dumps, every):
+    d = load(f, (0, 1, 5, 6, 7))  # id x vx vy vz
     x0 = packing_x[d[:, 0].astype(int) - 1]
     moved = np.abs(d[:, 1] - x0)
     front = length

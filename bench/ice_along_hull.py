@@ -2,7 +2,7 @@
 """Where the ice is along the hull, per particle dump of a LIGGGHTS run (finished or still going): what the
 resistance history does not say by itself (issue 11: "where we differ, say why, backed by a run").
     /usr/bin/python3 bench/ice_along_hull.py RUN_DIR [EVERY (2: every second dump)]
-Per dump, with the hull's x range from the case (bow at start_x + Lpp + speed t, Lpp long) and its beam B:
+Per dump (LIGGGHTS raw dumps while the run goes, the particles_*.csv of any engine when it is done), with the hull's x range from the case (bow at start_x + Lpp + speed t, Lpp long) and its beam B:
   - ahead: the ice within 1 m ahead of the bow, in pieces per m2 over the undisturbed bed's (the bed's mean
     areal density, pieces / channel area): above 1 = ice piled up ahead;
   - alongside: the ice beside the hull (|y| > B/2, between stern and bow), same ratio;
@@ -11,12 +11,12 @@ Per dump, with the hull's x range from the case (bow at start_x + Lpp + speed t,
     the bottom with their buoyancy and rub on it as the hull moves;
   - behind: pieces still deeper than DEPTH behind the stern (within 2 m).
 Needs Debian's python3-numpy (hence /usr/bin/python3). Reads RUN_DIR/case.yaml (channel, hull, ship)."""
-import glob
 import os
 import re
 import sys
 
 import numpy as np
+from run_dumps import every_nth, load, snapshots
 
 DEPTH = 0.05  # [m] below the water level: well below the undisturbed two-layer bed (0.035 m thick)
 
@@ -43,17 +43,14 @@ beam = float(value('hull', 'beam_m'))
 speed = float(value('ship', 'speed_m_s'))
 meta = open(os.path.join(run, 'meta.json')).read()
 dt = float(re.search(r'"dt_s": *([0-9.eE+-]+)', meta).group(1))
-dumps = sorted(glob.glob(os.path.join(run, 'particles', 'dump.*.txt')))
-if not dumps:
-    sys.exit('%s: no particle dumps' % run)
+dumps = snapshots(run, dt)
 
 print('| t [s] | bow x [m] | ahead (1 m) / bed | alongside / bed | under: bow third | middle third | stern third '
       '| behind (2 m), deep |')
 print('|---|---|---|---|---|---|---|---|')
 density = None
-for f in dumps[::every] + ([dumps[-1]] if (len(dumps) - 1) % every else []):
-    t = int(f.split('.')[-2]) * dt
-    d = np.loadtxt(f, skiprows=9, usecols=(1, 2, 3, 4))  # x y z radius
+for t, f in every_nth(dumps, every):
+    d = load(f, (1, 2, 3, 4))  # x y z radius
     x, y, top = d[:, 0], d[:, 1], d[:, 2] + d[:, 3]
     if density is None:  # pieces per m2 of the undisturbed bed
         density = len(d) / (length * width)

@@ -8,12 +8,12 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include <cmath>
-
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
 #include <thread>
@@ -270,6 +270,13 @@ TEST(LiggghtsResume, KilledRunResumesToTheSameResult) {
             0);
   EXPECT_FALSE(fs::exists(killed / "restart/final.restart")) << "killed too late: the run had finished";
   EXPECT_NE(brash::test::read_text(killed / "meta.json").find("\"running\""), std::string::npos);
+  // meta.json was refreshed while the engine ran: the killed attempt's wall time and model time count
+  const auto meta_killed = nlohmann::json::parse(brash::test::read_text(killed / "meta.json"));
+  ASSERT_EQ(meta_killed["attempts"].size(), 1u) << meta_killed.dump();
+  EXPECT_EQ(meta_killed["attempts"][0]["from"], "start");
+  EXPECT_GT(meta_killed["wall_time_s"].get<double>(), 0.0);
+  EXPECT_GE(meta_killed["model_time_reached_s"].get<double>(), 0.06 - 1e-9);
+  EXPECT_GT(meta_killed["particle_steps"].get<double>(), 0.0);
   // the record so far was written with the restart files (brash-post can look at a run while it goes)
   const auto so_far = read_force(killed / "hull_force.csv");
   ASSERT_FALSE(so_far.empty());
@@ -288,6 +295,19 @@ TEST(LiggghtsResume, KilledRunResumesToTheSameResult) {
       << resume_log;
   EXPECT_NE(resume_log.find("from restart/" + other.filename().string()), std::string::npos) << resume_log;
   EXPECT_NE(brash::test::read_text(killed / "meta.json").find("\"complete\""), std::string::npos);
+  // wall time and particle-steps are totals over both attempts; the resumed one redid the steps after the
+  // restart it took, so the work exceeds the uninterrupted run's
+  const auto meta_full = nlohmann::json::parse(brash::test::read_text(dir / "full/meta.json"));
+  const auto meta_resumed = nlohmann::json::parse(brash::test::read_text(killed / "meta.json"));
+  const auto& attempts = meta_resumed["attempts"];
+  ASSERT_EQ(attempts.size(), 2u) << meta_resumed.dump();
+  EXPECT_EQ(attempts[1]["from"], "restart");
+  EXPECT_LT(attempts[1]["t_from_s"].get<double>(), meta_killed["model_time_reached_s"].get<double>());
+  EXPECT_NEAR(meta_resumed["wall_time_s"].get<double>(),
+              attempts[0]["wall_s"].get<double>() + attempts[1]["wall_s"].get<double>(), 1e-6);
+  EXPECT_GE(attempts[0]["wall_s"].get<double>(), meta_killed["wall_time_s"].get<double>() - 1e-9);
+  EXPECT_GT(meta_resumed["particle_steps"].get<double>(), meta_full["particle_steps"].get<double>());
+  EXPECT_EQ(meta_full["attempts"].size(), 1u);
 
   const auto a = read_force(dir / "full/hull_force.csv"), b = read_force(killed / "hull_force.csv");
   ASSERT_EQ(a.size(), b.size());

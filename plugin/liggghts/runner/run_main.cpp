@@ -1,28 +1,30 @@
 // brash-liggghts-run CASE_DIR: runs a case with LIGGGHTS end to end and writes the run layout of
 // docs/case_format.md (case.yaml, meta.json, hull_force.csv, particles/, restart/, log.txt), then calls
 // brash-post on it. Progress with ETA on the terminal.
+#include <fmt/format.h>
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
-#include <fmt/format.h>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <map>
 #include <optional>
 #include <sstream>
-#include <csignal>
-#include <unistd.h>
 
 #include "brash/case.hpp"
-#include "brash/post/blocking.hpp"
-#include "brash/post/early_stop.hpp"
 #include "brash/error.hpp"
 #include "brash/hull/mesh.hpp"
 #include "brash/packing.hpp"
+#include "brash/post/blocking.hpp"
+#include "brash/post/early_stop.hpp"
 #include "brash/run_layout.hpp"
 #include "brash/runner_setup.hpp"
 #include "liggghts_input.h"
@@ -183,14 +185,22 @@ struct EngineResult {
   long steps = 0;
   long atoms = 0;
   bool run_started = false;  // the thermo header came: the input (and a restart file) was read, the run began
+  double particle_steps =
+      0;  // atoms x steps summed over the thermo lines (also for a run killed before its end)
+  double t_first_s = -1, t_last_s = -1;  // model time of the first and the last thermo line (-1: none)
   std::string error;
 };
 
+// Called by run_engine at every refresh of hull_force.csv: the model time this engine started from and has
+// reached [s], and the particle-steps it has done so far.
+using ProgressHook = std::function<void(double t_first_s, double t_s, double particle_steps)>;
+
 // Runs the engine, copies its screen output to log.txt and prints progress with an ETA.
 // hull_force.csv is refreshed with the record so far every 30 s of wall time and at every restart time
-// (csv_every_model_s), so that brash-post can look at a long run while it goes.
+// (csv_every_model_s), so that brash-post can look at a long run while it goes; on_progress is called then
+// too.
 EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, const std::string& input,
-                        EarlyStop* early, double csv_every_model_s) {
+                        EarlyStop* early, double csv_every_model_s, const ProgressHook& on_progress) {
   // exec: the shell's pid becomes the engine's (mpirun's), so an early stop can signal it
   std::string cmd = "cd " + brash::run::shell_quote(run_dir) + " && echo $$ > engine.pid && exec ";
   if (ranks > 1) cmd += fmt::format("mpirun --allow-run-as-root --oversubscribe -np {} ", ranks);
@@ -202,6 +212,7 @@ EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, c
   const auto start = std::chrono::steady_clock::now();
   char buf[4096];
   double last_print = -1, t_first = -1, last_csv = 0;
+  long prev_step = -1;
   double next_csv_t = csv_every_model_s > 0 ? csv_every_model_s : std::numeric_limits<double>::infinity();
   bool in_thermo = false;
   // On a terminal the progress line is rewritten in place every 2 s; into a file (nohup, a study's log) it is a
@@ -229,11 +240,14 @@ EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, c
                   &res.steps, &res.atoms);
     }
     if (!in_thermo) continue;
-    long step;
+    long step, atoms;
     double t;
-    if (std::sscanf(line.c_str(), " %ld %lf", &step, &t) == 2) {
+    if (std::sscanf(line.c_str(), " %ld %lf %ld", &step, &t, &atoms) == 3) {  // thermo: step v_t atoms ...
       const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      if (t_first < 0) t_first = t;  // a resumed run starts at its restart time
+      if (prev_step >= 0 && step > prev_step) res.particle_steps += double(atoms) * double(step - prev_step);
+      prev_step = step;
+      res.t_last_s = t;
+      if (t_first < 0) t_first = res.t_first_s = t;  // a resumed run starts at its restart time
       if (early && early->rel_ci > 0 && !early->stopped &&
           t >= early->t0 + brash::post::kEarlyStopFirstCheckFraction * (early->t1 - early->t0)) {
         const auto r = resistance_since(hull_force_raws(run_dir), early->t0, t);
@@ -253,6 +267,7 @@ EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, c
         last_csv = elapsed;
         while (next_csv_t <= t + 1e-9) next_csv_t += csv_every_model_s;
         convert_hull_force(hull_force_raws(run_dir), run_dir / "hull_force.csv", t);
+        if (on_progress) on_progress(t_first, t, res.particle_steps);
       }
       if (elapsed - last_print >= print_every_s && t > t_first) {
         last_print = elapsed;
@@ -392,6 +407,19 @@ int main(int argc, char** argv) {
       std::cout << run_dir.string() << "\n";
       return 0;
     }
+    // Wall time and particle-steps are totals over the run's attempts: a resume adds to the last ones
+    // recorded (meta.json is refreshed while an engine runs, so a killed attempt counts up to its last
+    // refresh), and "attempts" lists each one (start or restart file, model time from and to, wall time).
+    double wall_before = 0, particle_steps_before = 0;
+    nlohmann::json attempts = nlohmann::json::array();
+    if (resume) {
+      const auto old_meta = nlohmann::json::parse(std::ifstream(run_dir / "meta.json"), nullptr, false);
+      if (old_meta.is_object()) {
+        wall_before = old_meta.value("wall_time_s", 0.0);
+        particle_steps_before = old_meta.value("particle_steps", 0.0);
+        if (old_meta.contains("attempts") && old_meta["attempts"].is_array()) attempts = old_meta["attempts"];
+      }
+    }
     meta = {{"engine", "liggghts"},
             {"engine_version", "LIGGGHTS 3.8.0 (Debian libliggghts) + fix icefluid"},
             {"fluid_model", to_string(c.fluid.model)},
@@ -399,8 +427,8 @@ int main(int argc, char** argv) {
             {"dt_s", c.run.timestep_s},
             {"ranks", ranks},
             {"particles", spheres.size()},
-            {"wall_time_s", 0.0},
-            {"particle_steps", 0},
+            {"wall_time_s", wall_before},
+            {"particle_steps", particle_steps_before},
             {"git_commit", brash::run::git_commit()},
             {"status", "running"},
             {"reason", ""}};
@@ -412,11 +440,26 @@ int main(int argc, char** argv) {
     // and the default action ends the runner at once).
     install_signal_forwarding();
     const auto t0 = std::chrono::steady_clock::now();
+    attempts.push_back({{"from", resume ? "restart" : "start"},
+                        {"t_from_s", nullptr},
+                        {"t_to_s", nullptr},
+                        {"wall_s", 0.0}});
+    meta["attempts"] = attempts;
+    const ProgressHook on_progress = [&](double t_first, double t, double particle_steps) {
+      auto& a = meta["attempts"].back();
+      a["t_from_s"] = t_first;
+      a["t_to_s"] = t;
+      a["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      meta["wall_time_s"] = wall_before + a["wall_s"].get<double>();
+      meta["particle_steps"] = particle_steps_before + particle_steps;
+      meta["model_time_reached_s"] = t;
+      brash::run::write_meta(run_dir, meta);
+    };
     EngineResult res;
     EarlyStop early{c.speedups.early_stop_rel_ci, c.run.window_s[0], c.run.window_s[1],
                     c.speedups.early_stop_trend_check};
     if (!resume) {
-      res = run_engine(run_dir, ranks, run_duration, "in.lmp", &early, restart_every_model_s);
+      res = run_engine(run_dir, ranks, run_duration, "in.lmp", &early, restart_every_model_s, on_progress);
     } else {
       // Keep what the killed attempt wrote; the resumed run re-emits rows from its restart step on.
       if (fs::exists(run_dir / "hull_force.raw"))
@@ -426,7 +469,8 @@ int main(int argc, char** argv) {
         brash::run::write_atomic(run_dir / "in_resume.lmp", brash::liggghts::input_script(c, box, opt));
         std::cerr << "[brash-liggghts] resuming " << run_dir.string() << " from " << restart << "\n";
         meta["resumed_from"] = restart;
-        res = run_engine(run_dir, ranks, run_duration, "in_resume.lmp", &early, restart_every_model_s);
+        res = run_engine(run_dir, ranks, run_duration, "in_resume.lmp", &early, restart_every_model_s,
+                         on_progress);
         if (early.stopped || g_signal != 0 || (res.exit_code == 0 && res.error.empty())) break;
         std::cerr << "[brash-liggghts] resume from " << restart << " failed: " << res.error << "\n";
         // An older restart file helps when this one could not be read; a run that began and then stopped (a
@@ -443,9 +487,17 @@ int main(int argc, char** argv) {
                                                         early.stopped ? early.t_stop
                                                                       : std::numeric_limits<double>::infinity());
     convert_dumps(run_dir, c);
-    meta["wall_time_s"] = wall;
-    meta["loop_time_s"] = res.loop_time_s;
-    meta["particle_steps"] = static_cast<double>(res.atoms) * static_cast<double>(res.steps);
+    meta["wall_time_s"] = wall_before + wall;
+    meta["attempts"].back()["wall_s"] = wall;
+    if (res.t_last_s >= 0) {
+      meta["attempts"].back()["t_from_s"] = res.t_first_s;
+      meta["attempts"].back()["t_to_s"] = res.t_last_s;
+      meta["model_time_reached_s"] = res.t_last_s;
+    }
+    meta["loop_time_s"] = res.loop_time_s;  // this attempt's engine loop
+    meta["particle_steps"] = particle_steps_before +
+                             (res.steps > 0 ? static_cast<double>(res.atoms) * static_cast<double>(res.steps)
+                                            : res.particle_steps);
     meta["hull_force_rows"] = rows;
     if (early.stopped) {
       // The run ends at the stop: the resolved case says so, the window ends there, meta records why.
@@ -458,7 +510,9 @@ int main(int argc, char** argv) {
                             {"ci95_N", early.ci95}};
       res.exit_code = 0;
       res.error.clear();
-      meta["particle_steps"] = static_cast<double>(spheres.size()) * std::round(early.t_stop / c.run.timestep_s);
+      if (!resume)  // (a resumed run keeps the sum over its attempts)
+        meta["particle_steps"] =
+            static_cast<double>(spheres.size()) * std::round(early.t_stop / c.run.timestep_s);
     }
     if (g_signal != 0 && !early.stopped) {
       meta["status"] = "interrupted";
