@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The paper-case runs so far, side by side: mean resistance (-fx of the hull force, model scale) in bins of
-# model time, for every runs/paper-<engine>-<model> directory (finished or still running). A LIGGGHTS run is
-# read from its raw force files (every attempt of a run resumed in pieces; a later attempt's row replaces an
+# model time, for every runs/paper-<engine>-<model> directory (finished or still running). A finished run is read
+# from its hull_force.csv; a LIGGGHTS run still going from its raw force files (every attempt of a run resumed in pieces; a later attempt's row replaces an
 # earlier one), an ODE run from hull_force.csv.
 #   bash bench/paper_progress.sh [BIN_S (0.5)] [RUNS_DIR (runs)]
 set -euo pipefail
@@ -15,9 +15,12 @@ for d in "$runs"/paper-*/; do
   d="${d%/}"; name="$(basename "$d")"
   raws=("$d"/hull_force*.raw)
   [ ${#raws[@]} -gt 0 ] || [ -f "$d/hull_force.csv" ] || continue
-  if [ ${#raws[@]} -gt 0 ]; then
+  if [ ${#raws[@]} -gt 0 ] && ! grep -q '"status": "complete"' "$d/meta.json" 2>/dev/null; then
     # parts in attempt order, then the current one; rows keyed by step
-    files=$(ls "$d"/hull_force.part*.raw 2>/dev/null | sort -V; [ -f "$d/hull_force.raw" ] && echo "$d/hull_force.raw")
+    # (printf, not ls: with no part file the glob is empty, and ls would list the working directory)
+    parts=("$d"/hull_force.part*.raw)
+    files=$( { [ ${#parts[@]} -eq 0 ] || printf '%s\n' "${parts[@]}" | sort -V; }
+             [ -f "$d/hull_force.raw" ] && echo "$d/hull_force.raw" || true)
     # (a resumed attempt's first row is its set-up, without contact forces: the earlier value is kept, as the runner does)
     awk 'FNR == 1 { first = -1 } !/^#/ && NF >= 5 { if (first < 0) { first = $1; if ($1 in t) next }
          t[$1] = $2; fx[$1] = $3 } END { for (s in t) print t[s], fx[s] }' $files

@@ -1,13 +1,12 @@
 // hull_force.csv reader.
-#include <brash/post/force_history.hpp>
-
-#include <array>
-#include <string_view>
-
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
 #include <brash/error.hpp>
 #include <brash/post/csv.hpp>
+#include <brash/post/force_history.hpp>
+#include <string_view>
 
 namespace brash::post {
 
@@ -28,6 +27,19 @@ ForceHistory read_force_history(const std::filesystem::path& path, bool run_in_p
   });
   h.tail_dropped = scan.tail_dropped;
   return h;
+}
+
+std::vector<RecordGap> record_gaps(const std::vector<double>& t_s, double t0, double t1) {
+  std::vector<RecordGap> gaps;
+  if (t_s.size() < 3) return gaps;
+  std::vector<double> steps(t_s.size() - 1);
+  for (std::size_t i = 1; i < t_s.size(); ++i) steps[i - 1] = t_s[i] - t_s[i - 1];
+  auto mid = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
+  std::nth_element(steps.begin(), mid, steps.end());
+  const double limit = kGapFactor * *mid;
+  for (std::size_t i = 1; i < t_s.size(); ++i)
+    if (t_s[i] - t_s[i - 1] > limit && t_s[i] > t0 && t_s[i - 1] < t1) gaps.push_back({t_s[i - 1], t_s[i]});
+  return gaps;
 }
 
 }  // namespace brash::post

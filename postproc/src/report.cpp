@@ -154,6 +154,21 @@ RunAnalysis analyze_run(const std::filesystem::path& run_dir) {
     a.notes.push_back(fmt::format("record ends at t = {:.3f} s, before the window end {} s: window shortened to [{:.3f}, {:.3f}] s",
                                   a.force.t_s.back(), w.requested_s[1], w.used_s[0], w.used_s[1]));
 
+  a.gaps = record_gaps(a.force.t_s, w.used_s[0], w.used_s[1]);
+  if (!a.gaps.empty()) {
+    double missing = 0;
+    std::string list;
+    for (const auto& g : a.gaps) {
+      missing += std::min(g.to_s, w.used_s[1]) - std::max(g.from_s, w.used_s[0]);
+      list += fmt::format("{}{:.2f}-{:.2f} s", list.empty() ? "" : ", ", g.from_s, g.to_s);
+    }
+    const double span = w.used_s[1] - w.used_s[0];
+    a.notes.push_back(fmt::format(
+        "hull_force.csv has {} gap(s) in the window: no record between {} ({:.3g} s, {:.0f} % of the window "
+        "missing); every number covers the {:.3g} s recorded, not the whole window",
+        a.gaps.size(), list, missing, 100 * missing / span, span - missing));
+  }
+
   a.fx = block_average(slice(a.force.fx_N, w.i0, w.i1));
   a.fy = block_average(slice(a.force.fy_N, w.i0, w.i1));
   a.fz = block_average(slice(a.force.fz_N, w.i0, w.i1));
@@ -210,7 +225,8 @@ nlohmann::ordered_json report_json(const RunAnalysis& a) {
   j["treatment"] = a.meta.treatment;
   j["case"] = a.case_.name;
   j["status"] = a.meta.status;
-  j["complete"] = a.meta.status == "complete" && !a.force.tail_dropped && !w.truncated && !w.fallback;
+  j["complete"] =
+      a.meta.status == "complete" && !a.force.tail_dropped && !w.truncated && !w.fallback && a.gaps.empty();
   j["speed_m_s"] = a.case_.speed_m_s;
   j["window_s"] = {w.used_s[0], w.used_s[1]};
   j["window_requested_s"] = {w.requested_s[0], w.requested_s[1]};
@@ -218,6 +234,8 @@ nlohmann::ordered_json report_json(const RunAnalysis& a) {
   j["window_fallback"] = w.fallback;
   j["record"] = {{"samples", a.force.t_s.size()}, {"t_first_s", a.force.t_s.front()},
                  {"t_last_s", a.force.t_s.back()}, {"incomplete_tail_dropped", a.force.tail_dropped}};
+  j["record"]["gaps_in_window_s"] = J::array();
+  for (const auto& g : a.gaps) j["record"]["gaps_in_window_s"].push_back({g.from_s, g.to_s});
   j["resistance_model_N"] = {{"mean", a.resistance.mean}, {"ci95", a.resistance.ci95},
                              {"x", a.fx.mean}, {"y", a.fy.mean}, {"z", a.fz.mean},
                              {"ci95_xyz", {a.fx.ci95, a.fy.ci95, a.fz.ci95}},

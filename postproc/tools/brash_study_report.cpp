@@ -209,6 +209,15 @@ void load_report(Run& r) {
   if (opt<bool>(j, P("/complete")) == false) {
     if (opt<bool>(j, P("/window_truncated")).value_or(false)) r.warnings.push_back("window truncated");
     if (opt<bool>(j, P("/window_fallback")).value_or(false)) r.warnings.push_back("window fallback (last half)");
+    const json gaps =
+        j.contains(P("/record/gaps_in_window_s")) ? j.at(P("/record/gaps_in_window_s")) : json::array();
+    if (gaps.is_array() && !gaps.empty()) {
+      std::string list;
+      for (const auto& g : gaps)
+        list += fmt::format("{}{:.2f}-{:.2f} s", list.empty() ? "" : ", ", g.at(0).get<double>(),
+                            g.at(1).get<double>());
+      r.warnings.push_back("RECORD HAS GAPS in the window (no force record " + list + ")");
+    }
     if (r.warnings.empty()) r.warnings.push_back("report not complete");
   }
   if (opt<bool>(j, P("/resistance_model_N/blocking/plateau_found")) == false)

@@ -277,6 +277,17 @@ TEST(LiggghtsResume, KilledRunResumesToTheSameResult) {
   EXPECT_GT(meta_killed["wall_time_s"].get<double>(), 0.0);
   EXPECT_GE(meta_killed["model_time_reached_s"].get<double>(), 0.06 - 1e-9);
   EXPECT_GT(meta_killed["particle_steps"].get<double>(), 0.0);
+  // log.txt has every engine line the runner read before the kill (written through, not buffered): at least
+  // the thermo line of the model time meta.json records
+  {
+    std::istringstream log(brash::test::read_text(killed / "log.txt"));
+    const std::regex thermo(R"(^\s+[0-9]+\s+([0-9.eE+-]+)\s+[0-9]+\s)");
+    double t_max = -1;
+    std::smatch m;
+    for (std::string line; std::getline(log, line);)
+      if (std::regex_search(line, m, thermo)) t_max = std::max(t_max, std::stod(m[1]));
+    EXPECT_GE(t_max, meta_killed["model_time_reached_s"].get<double>() - 1e-9);
+  }
   // the record so far was written with the restart files (brash-post can look at a run while it goes)
   const auto so_far = read_force(killed / "hull_force.csv");
   ASSERT_FALSE(so_far.empty());

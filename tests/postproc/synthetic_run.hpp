@@ -19,6 +19,7 @@ struct SyntheticRun {
   double fy_N = 0.1, fz_N = -0.5;     // plateau values of fy, fz
   double noise_N = 0.3, phi = 0.8;    // AR(1) noise on every component
   double drift_N_per_s = 0;  // resistance rising linearly after t = 15 s (a record that is not stationary)
+  double gap_from_s = 0, gap_to_s = 0;  // rows strictly between them are not written (a lost attempt's rows)
   std::string status = "complete";
   bool truncated_tail = false;        // last line cut without newline
   std::vector<double> snapshot_times_s{0.0, 20.0, 40.0};
@@ -88,6 +89,7 @@ inline void write_synthetic_run(const std::filesystem::path& dir, SyntheticRun& 
     nx = r.phi * nx + s * e(rng);
     ny = r.phi * ny + s * e(rng);
     nz = r.phi * nz + s * e(rng);
+    if (t > r.gap_from_s + 1e-9 && t < r.gap_to_s - 1e-9) continue;
     r.t_s.push_back(t);
     r.fx_N.push_back(-(r.mean_resistance_N * ramp + r.drift_N_per_s * std::max(0.0, t - 15.0) + nx));
     r.fy_N_series.push_back(r.fy_N * ramp + ny);

@@ -120,6 +120,40 @@ TEST(RunDir, ResistanceRisingThroughTheWindowIsFlagged) {
   fs::remove_all(dir);
 }
 
+TEST(RunDir, GapInTheRecordIsNamedAndTheReportIsNotComplete) {
+  // The paper run's lesson: a resumed run's retry overwrote an attempt's rows, and the window mean silently
+  // covered 14 of its 25 s. A missing stretch inside the window is named in the notes, report.json lists it
+  // and says complete: false; one before the window is not a concern of the window's numbers.
+  const auto dir = scratch("gap");
+  SyntheticRun r;
+  r.gap_from_s = 21.9;
+  r.gap_to_s = 32.5;
+  write_synthetic_run(dir, r);
+  auto j = run_cli(dir);
+  ASSERT_EQ(j["record"]["gaps_in_window_s"].size(), 1u) << j["record"];
+  EXPECT_NEAR(j["record"]["gaps_in_window_s"][0][0].get<double>(), 21.9, 1e-9);
+  EXPECT_NEAR(j["record"]["gaps_in_window_s"][0][1].get<double>(), 32.5, 1e-9);
+  EXPECT_FALSE(j["complete"].get<bool>());
+  EXPECT_NE(
+      j["notes"].dump().find("1 gap(s) in the window: no record between 21.90-32.50 s (10.6 s, 42 % of the "
+                             "window missing)"),
+      std::string::npos)
+      << j["notes"];
+  // the mean is over the rows there are
+  EXPECT_NEAR(j["resistance_model_N"]["mean"].get<double>(),
+              -brash::post::testing::window_mean(r.t_s, r.fx_N, 15.0, 40.0), 1e-9);
+
+  r = SyntheticRun{};
+  r.gap_from_s = 5.0;
+  r.gap_to_s = 8.0;
+  write_synthetic_run(dir, r);
+  j = run_cli(dir);
+  EXPECT_TRUE(j["record"]["gaps_in_window_s"].empty());
+  EXPECT_TRUE(j["complete"].get<bool>());
+  EXPECT_EQ(j["notes"].dump().find("gap(s) in the window"), std::string::npos) << j["notes"];
+  fs::remove_all(dir);
+}
+
 TEST(RunDir, ShortRunShortensWindowAndSaysSo) {
   const auto dir = scratch("short");
   SyntheticRun r;

@@ -303,5 +303,18 @@ TEST(StudyReport, DriftingRecordIsFlaggedInItsStatus) {
   EXPECT_NE(md.find("| 11.60 ± 0.40 |"), std::string::npos) << md;
   EXPECT_NE(md.find("not stationary: the window's second half +8.9 % on its first"), std::string::npos) << md;
   EXPECT_EQ(md.find("+0.9 % on its first"), std::string::npos) << md;  // b: within its CI, not flagged
+  EXPECT_EQ(md.find("RECORD HAS GAPS"), std::string::npos) << md;
+
+  // a force record with a stretch missing in the window (report.json record.gaps_in_window_s, complete false)
+  ja["complete"] = false;
+  ja["record"]["gaps_in_window_s"] = json::array({json::array({21.9, 32.5})});
+  std::ofstream(d / "runs/a/report.json") << ja.dump(2);
+  ASSERT_EQ(
+      run_tool(d, fmt::format("'{}' --out '{}'", (d / "manifest.tsv").string(), (d / "study.md").string())),
+      0)
+      << read(d / "tool.log");
+  EXPECT_NE(read(d / "study.md").find("RECORD HAS GAPS in the window (no force record 21.90-32.50 s)"),
+            std::string::npos)
+      << read(d / "study.md");
   fs::remove_all(d);
 }

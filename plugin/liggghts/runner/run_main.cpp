@@ -222,7 +222,7 @@ EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, c
   g_engine_pid = 0;
   while (std::fgets(buf, sizeof buf, pipe)) {
     const std::string line = buf;
-    log << line;
+    log << line << std::flush;       // a runner killed outright (kill -9, a session end) loses no line
     if (g_engine_pid.load() == 0) {  // the shell wrote engine.pid before its first output line
       std::ifstream pidf(run_dir / "engine.pid");
       long pid = 0;
@@ -461,10 +461,12 @@ int main(int argc, char** argv) {
     if (!resume) {
       res = run_engine(run_dir, ranks, run_duration, "in.lmp", &early, restart_every_model_s, on_progress);
     } else {
-      // Keep what the killed attempt wrote; the resumed run re-emits rows from its restart step on.
-      if (fs::exists(run_dir / "hull_force.raw"))
-        fs::rename(run_dir / "hull_force.raw", run_dir / fmt::format("hull_force.part{}.raw", hull_force_raws(run_dir).size()));
       for (const auto& restart : restarts) {
+        // Keep what the earlier engine wrote (a killed attempt, or the one before this retry: each engine
+        // opens hull_force.raw anew); the resumed run re-emits rows from its restart step on.
+        if (fs::exists(run_dir / "hull_force.raw"))
+          fs::rename(run_dir / "hull_force.raw",
+                     run_dir / fmt::format("hull_force.part{}.raw", hull_force_raws(run_dir).size()));
         opt.restart_file = restart;
         brash::run::write_atomic(run_dir / "in_resume.lmp", brash::liggghts::input_script(c, box, opt));
         std::cerr << "[brash-liggghts] resuming " << run_dir.string() << " from " << restart << "\n";

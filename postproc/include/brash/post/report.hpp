@@ -64,6 +64,7 @@ struct RunAnalysis {
   PostCase case_;
   ForceHistory force;
   WindowSelection window;
+  std::vector<RecordGap> gaps;  // stretches of the window with no record (record_gaps)
   BlockingResult resistance;  // of -fx, model scale [N]
   BlockingResult fx, fy, fz;  // force components of the ice on the hull [N]
   std::optional<HalvesTrend> resistance_trend;  // the window's two halves (>= kMinTrendSamples samples)
