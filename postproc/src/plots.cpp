@@ -56,7 +56,22 @@ void run_gnuplot(const fs::path& script) {
 fs::path plot_force_history(const RunAnalysis& a, const fs::path& out_dir, const fs::path& work_dir) {
   fs::create_directories(work_dir);
   const auto data = work_dir / "force_history.csv";
-  brash::run::write_atomic(data, force_history_csv(a));
+  // force_history_csv with an empty line at each gap of the record, where gnuplot breaks the line (not a
+  // straight line drawn across a stretch that has no record)
+  std::string text = force_history_csv(a);
+  if (!a.force.t_s.empty()) {
+    const auto gaps = record_gaps(a.force.t_s, a.force.t_s.front(), a.force.t_s.back());
+    std::size_t pos = text.find('\n') + 1;  // past the header
+    for (std::size_t i = 0, g = 0; i < a.force.t_s.size() && g < gaps.size(); ++i) {
+      if (a.force.t_s[i] == gaps[g].to_s) {
+        text.insert(pos, "\n");
+        pos += 1;
+        ++g;
+      }
+      pos = text.find('\n', pos) + 1;
+    }
+  }
+  brash::run::write_atomic(data, text);
   const auto& w = a.window.used_s;
   const std::string body = fmt::format(R"(set datafile separator ','
 set title 'Force of the ice on the hull ({} / {}), model scale; shaded: averaging window [{:.2f}, {:.2f}] s'

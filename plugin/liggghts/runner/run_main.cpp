@@ -69,8 +69,10 @@ std::map<long, ForceRow> read_hull_force_raws(const std::vector<fs::path>& raws)
       double t, fx, fy, fz;
       if (!(ss >> step >> t >> fx >> fy >> fz)) continue;  // a truncated last line of a killed run
       if (first_step < 0) first_step = step;
-      // A resumed run's first row is its set-up (no contact force summed yet): keep the earlier value.
-      if (step == first_step && rows.count(step)) continue;
+      // A resumed attempt's first row is its set-up (no contact force summed yet: 0): never a record. The
+      // earlier attempt's row for that step is kept; without one the step is missing, which brash-post names
+      // as a gap (the paper run had two such zero rows where an earlier attempt's rows were lost).
+      if (step == first_step && &raw != &raws.front()) continue;
       rows[step] = {t, fx, fy, fz};
     }
   }
@@ -309,7 +311,30 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   app.add_flag("--no-post", no_post, "do not run brash-post afterwards");
   app.add_flag("--prepare-only", prepare_only, "write the run directory's inputs (in.lmp, packing.data, hull.stl) and stop");
+  fs::path rebuild_dir;
+  auto* rebuild_opt = app.add_option("--rebuild-record", rebuild_dir,
+                                     "rewrite a run directory's hull_force.csv from its raw force files (all "
+                                     "attempts) with this runner's rules, then run brash-post");
+  rebuild_opt->excludes(case_opt)->excludes(resume_opt);
   CLI11_PARSE(app, argc, argv);
+  if (!rebuild_dir.empty()) {
+    const auto raws = hull_force_raws(rebuild_dir);
+    if (raws.empty()) {
+      std::cerr << "brash-liggghts-run: error: " << rebuild_dir.string()
+                << ": no hull_force.raw or hull_force.part*.raw to rebuild the record from\n";
+      return 1;
+    }
+    try {
+      const brash::run::RunDirLock lock(rebuild_dir);  // not while a runner writes it
+      const auto rows = convert_hull_force(raws, rebuild_dir / "hull_force.csv");
+      std::cerr << "[brash-liggghts] " << (rebuild_dir / "hull_force.csv").string() << ": " << rows
+                << " rows from " << raws.size() << " raw file(s)\n";
+    } catch (const std::exception& e) {
+      std::cerr << "brash-liggghts-run: error: " << e.what() << "\n";
+      return 1;
+    }
+    return no_post ? 0 : brash::run::run_postprocessor(rebuild_dir, "[brash-liggghts]");
+  }
   if (case_dir.empty() && resume_dir.empty()) {
     std::cerr << "brash-liggghts-run: error: case_dir (a folder with case.yaml) or --resume RUN_DIR is required\n";
     return 2;
