@@ -253,6 +253,7 @@ nlohmann::ordered_json report_json(const RunAnalysis& a) {
   j["ratio_fsicr_to_sim"] = opt(a.ratio_fsicr_to_sim);
   j["wall_time_s"] = opt(a.meta.wall_time_s);
   j["particle_steps"] = opt(a.meta.particle_steps);
+  j["exits"] = a.meta.exits;  // pieces that left through the channel's open ends (removed from the scene)
   j["paper_full_kN"] = {{"added_mass", PaperValues::added_mass_full_kN}, {"drag", PaperValues::drag_full_kN}};
   if (a.band)
     j["contact_band"] = {{"band_below_m", a.band->band_below_m},
@@ -281,9 +282,10 @@ std::string report_markdown(const RunAnalysis& a) {
                     a.case_.speed_m_s, a.case_.scale_lambda);
   md += fmt::format("| averaging window | [{:.3f}, {:.3f}] s (requested [{}, {}] s){} |\n", w.used_s[0], w.used_s[1],
                     w.requested_s[0], w.requested_s[1], w.fallback ? " FALLBACK" : (w.truncated ? " TRUNCATED" : ""));
-  md += fmt::format("| wall time | {} |\n| particle steps | {} |\n\n",
-                    a.meta.wall_time_s ? fmt::format("{:.1f} s", *a.meta.wall_time_s) : "n/a",
-                    a.meta.particle_steps ? fmt::format("{:.4g}", *a.meta.particle_steps) : "n/a");
+  md += fmt::format(
+      "| wall time | {} |\n| particle steps | {} |\n| pieces gone through the channel's ends | {} |\n\n",
+      a.meta.wall_time_s ? fmt::format("{:.1f} s", *a.meta.wall_time_s) : "n/a",
+      a.meta.particle_steps ? fmt::format("{:.4g}", *a.meta.particle_steps) : "n/a", a.meta.exits);
   const auto& L = a.resistance.levels[a.resistance.level];
   md += "## Resistance (resistance = -fx, force of the ice on the hull, contacts only)\n\n";
   md += fmt::format("| quantity | model scale | full scale |\n|---|---|---|\n"

@@ -48,6 +48,7 @@ RunMeta read_run_meta(const std::filesystem::path& path) {
   take(j, "particle_steps", m.particle_steps, path);
   take(j, "ranks", m.ranks, path);
   take(j, "particles", m.particles, path);
+  take(j, "exits", m.exits, path);
   if (j.contains("skips") && j["skips"].is_object()) take(j["skips"], "cull", m.culled_far_field, path);
   return m;
 }

@@ -338,6 +338,15 @@ TEST(LiggghtsResume, KilledRunResumesToTheSameResult) {
   const std::string record = brash::test::read_text(killed / "hull_force.csv");
   ASSERT_EQ(std::system(rebuild.c_str()), 0) << brash::test::read_text(dir / "rebuild.log");
   EXPECT_EQ(brash::test::read_text(killed / "hull_force.csv"), record);
+  EXPECT_FALSE(nlohmann::json::parse(brash::test::read_text(killed / "meta.json")).contains("exits"));
+  // ... and the count of pieces gone through the channel's ends from the last "N in all" of fix brash/exit
+  std::ofstream(killed / "log.txt", std::ios::app)
+      << "fix brash/exit: step 100: 2 piece(s) left the scene through the channel's ends (x < -1 or x > 2 "
+         "m); 2 in all\n"
+      << "fix brash/exit: step 200: 1 piece(s) left the scene through the channel's ends (x < -1 or x > 2 "
+         "m); 3 in all\n";
+  ASSERT_EQ(std::system(rebuild.c_str()), 0) << brash::test::read_text(dir / "rebuild.log");
+  EXPECT_EQ(nlohmann::json::parse(brash::test::read_text(killed / "meta.json"))["exits"], 3);
   // without the killed attempt's rows from t = 0.03 s on (as when they were lost) the resumed attempt's
   // set-up row at its restart time (no contact force summed yet) is not taken for a record: the record jumps
   // from 0.02 s to one output interval after the restart (a gap brash-post names)

@@ -24,6 +24,7 @@ struct SyntheticRun {
   bool truncated_tail = false;        // last line cut without newline
   std::vector<double> snapshot_times_s{0.0, 20.0, 40.0};
   int particles = 60;
+  int exits = 0;                      // meta.json "exits" (written when > 0)
   std::string hull_extra_yaml;        // more hull: keys, e.g. "  band_m: [0.15, 0.1]\n"
   double deep_piece_z_m = 0;          // nonzero: piece 0's centre z in the second snapshot
   // Written values (read back by the tests).
@@ -73,9 +74,11 @@ inline void write_synthetic_run(const std::filesystem::path& dir, SyntheticRun& 
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir / "particles");
   write_text(dir / "case.yaml", synthetic_case_yaml(40.0, r.hull_extra_yaml));
-  write_text(dir / "meta.json", fmt::format(R"({{"engine": "synthetic", "engine_version": "1.0", "fluid_model": "added_mass",
+  write_text(dir / "meta.json",
+             fmt::format(R"({{"engine": "synthetic", "engine_version": "1.0", "fluid_model": "added_mass",
  "treatment": "implicit", "dt_s": 5e-5, "ranks": 2, "particles": {}, "wall_time_s": 123.5,
- "particle_steps": 4.2e9, "git_commit": "abc", "status": "{}", "reason": ""}})", r.particles, r.status));
+ "particle_steps": 4.2e9, "git_commit": "abc", "status": "{}", "reason": ""{}}})",
+                         r.particles, r.status, r.exits > 0 ? fmt::format(", \"exits\": {}", r.exits) : ""));
 
   std::mt19937_64 rng(42);
   std::normal_distribution<double> e(0, 1);

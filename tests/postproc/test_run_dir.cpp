@@ -87,6 +87,7 @@ TEST(RunDir, ReportJsonHasEveryKeyWithCorrectValues) {
               j["fsicr"]["R_CH_kN"].get<double>() / j["resistance_full_kN"].get<double>(), 1e-12);
   EXPECT_EQ(j["wall_time_s"].get<double>(), 123.5);
   EXPECT_EQ(j["particle_steps"].get<double>(), 4.2e9);
+  EXPECT_EQ(j["exits"].get<long>(), 0);  // no meta.json "exits": none
   for (const auto* f : {"report.md", "force_history.csv", "blocking.csv"}) EXPECT_TRUE(fs::exists(dir / f)) << f;
   fs::remove_all(dir);
 }
@@ -117,6 +118,19 @@ TEST(RunDir, ResistanceRisingThroughTheWindowIsFlagged) {
   std::ifstream md(dir / "report.md");
   const std::string text((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());
   EXPECT_NE(text.find("**the record drifts**"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST(RunDir, PiecesGoneThroughTheChannelEndsAreReported) {
+  const auto dir = scratch("exits");
+  SyntheticRun r;
+  r.exits = 46;
+  write_synthetic_run(dir, r);
+  const auto j = run_cli(dir);
+  EXPECT_EQ(j["exits"].get<long>(), 46);
+  std::ifstream md(dir / "report.md");
+  const std::string text((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("| pieces gone through the channel's ends | 46 |"), std::string::npos) << text;
   fs::remove_all(dir);
 }
 

@@ -181,6 +181,16 @@ std::vector<double> resistance_since(const std::vector<fs::path>& raws, double t
   return r;
 }
 
+// fix brash/exit's line "fix brash/exit: step S: K piece(s) left ... ; N in all" -> N (the fix's count is
+// kept in restart files, so the last line of a resumed run is the run's total); -1 for any other line.
+long exit_total(const std::string& line) {
+  if (line.rfind("fix brash/exit: step", 0) != 0) return -1;
+  const auto at = line.rfind("; ");
+  long n = -1;
+  if (at == std::string::npos || std::sscanf(line.c_str() + at, "; %ld in all", &n) != 1) return -1;
+  return n;
+}
+
 struct EngineResult {
   int exit_code = 0;
   double loop_time_s = 0;
@@ -190,6 +200,7 @@ struct EngineResult {
   double particle_steps =
       0;  // atoms x steps summed over the thermo lines (also for a run killed before its end)
   double t_first_s = -1, t_last_s = -1;  // model time of the first and the last thermo line (-1: none)
+  long exits = -1;  // fix brash/exit's count of pieces gone through the channel's ends ("N in all"; -1: none)
   std::string error;
 };
 
@@ -236,6 +247,7 @@ EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, c
     if (line.rfind("Step ", 0) == 0 || line.find(" Step ") != std::string::npos)
       in_thermo = res.run_started = true;
     if (line.rfind("ERROR", 0) == 0 && res.error.empty()) res.error = line.substr(0, line.find('\n'));
+    if (const long n = exit_total(line); n >= 0) res.exits = n;
     if (line.rfind("Loop time of", 0) == 0) {
       in_thermo = false;
       std::sscanf(line.c_str(), "Loop time of %lf on %*d procs for %ld steps with %ld atoms", &res.loop_time_s,
@@ -329,6 +341,20 @@ int main(int argc, char** argv) {
       const auto rows = convert_hull_force(raws, rebuild_dir / "hull_force.csv");
       std::cerr << "[brash-liggghts] " << (rebuild_dir / "hull_force.csv").string() << ": " << rows
                 << " rows from " << raws.size() << " raw file(s)\n";
+      // and the count of pieces gone through the channel's ends, from the engine's log
+      long exits = -1;
+      std::ifstream log(rebuild_dir / "log.txt");
+      for (std::string line; std::getline(log, line);)
+        if (const long n = exit_total(line); n >= 0) exits = n;
+      if (exits >= 0) {
+        auto meta = nlohmann::json::parse(std::ifstream(rebuild_dir / "meta.json"), nullptr, false);
+        if (meta.is_object()) {
+          meta["exits"] = exits;
+          brash::run::write_meta(rebuild_dir, meta);
+          std::cerr << "[brash-liggghts] " << exits
+                    << " piece(s) gone through the channel's ends (log.txt)\n";
+        }
+      }
     } catch (const std::exception& e) {
       std::cerr << "brash-liggghts-run: error: " << e.what() << "\n";
       return 1;
@@ -522,6 +548,7 @@ int main(int argc, char** argv) {
       meta["model_time_reached_s"] = res.t_last_s;
     }
     meta["loop_time_s"] = res.loop_time_s;  // this attempt's engine loop
+    if (res.exits >= 0) meta["exits"] = res.exits;
     meta["particle_steps"] = particle_steps_before +
                              (res.steps > 0 ? static_cast<double>(res.atoms) * static_cast<double>(res.steps)
                                             : res.particle_steps);

@@ -12,6 +12,7 @@ struct RunMeta {
   std::string reason;
   std::optional<double> dt_s, wall_time_s, particle_steps;
   std::optional<long long> ranks, particles;
+  long long exits = 0;  // pieces that left through the channel's open ends (fix brash/exit, World::retire)
   bool culled_far_field = false;  // brash-ode --cull (skips.cull): spheres outside the window frozen, no wake rule
   bool in_progress() const { return status == "running"; }
 };
