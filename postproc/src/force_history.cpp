@@ -1,12 +1,14 @@
 // hull_force.csv reader.
-#include <fmt/format.h>
+#include <brash/post/force_history.hpp>
 
 #include <algorithm>
 #include <array>
+#include <string_view>
+
+#include <fmt/format.h>
+
 #include <brash/error.hpp>
 #include <brash/post/csv.hpp>
-#include <brash/post/force_history.hpp>
-#include <string_view>
 
 namespace brash::post {
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <numeric>
+#include <sstream>
 #include <stdexcept>
 #include <sys/wait.h>
 
@@ -56,20 +57,15 @@ void run_gnuplot(const fs::path& script) {
 fs::path plot_force_history(const RunAnalysis& a, const fs::path& out_dir, const fs::path& work_dir) {
   fs::create_directories(work_dir);
   const auto data = work_dir / "force_history.csv";
-  // force_history_csv with an empty line at each gap of the record, where gnuplot breaks the line (not a
-  // straight line drawn across a stretch that has no record)
-  std::string text = force_history_csv(a);
-  if (!a.force.t_s.empty()) {
-    const auto gaps = record_gaps(a.force.t_s, a.force.t_s.front(), a.force.t_s.back());
-    std::size_t pos = text.find('\n') + 1;  // past the header
-    for (std::size_t i = 0, g = 0; i < a.force.t_s.size() && g < gaps.size(); ++i) {
-      if (a.force.t_s[i] == gaps[g].to_s) {
-        text.insert(pos, "\n");
-        pos += 1;
-        ++g;
-      }
-      pos = text.find('\n', pos) + 1;
-    }
+  // force_history_csv with an empty line before the first row after each gap of the record: gnuplot breaks
+  // the line there instead of drawing it straight across a stretch that has no record
+  const auto& t = a.force.t_s;
+  const auto gaps = t.empty() ? std::vector<RecordGap>{} : record_gaps(t, t.front(), t.back());
+  std::istringstream rows(force_history_csv(a));
+  std::string text, line;
+  for (std::size_t k = 0, g = 0; std::getline(rows, line); ++k) {  // k = 0: the header
+    if (k > 0 && g < gaps.size() && t[k - 1] == gaps[g].to_s) text += '\n', ++g;
+    text += line + '\n';
   }
   brash::run::write_atomic(data, text);
   const auto& w = a.window.used_s;

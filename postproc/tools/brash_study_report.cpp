@@ -549,12 +549,10 @@ void section_setup(Study& s, std::string& md) {
                                 : "far field, window alone (biased high)");
        }},
       {"channel ends", "21.0 x 2.25 m; what bounds the ends is not stated",
-       "open ends let the floating bed relax into open water: on the LIGGGHTS added_mass paper run 5.3 % of "
-       "the "
-       "pieces drifted past the far end by 40 s, and the relaxation from there met the bow's push at ~30 s; "
-       "an end "
-       "wall would be the frozen wall the far-field ensembles measured (docs/performance.md, "
-       "bench/channel_end_spread.py)",
+       "open ends let the floating bed relax into open water: on the LIGGGHTS added_mass paper run "
+       "5.3 % of the pieces drifted past the far end by 40 s, and the relaxation from there met the "
+       "bow's push at ~30 s; an end wall would be the frozen wall the far-field ensembles measured "
+       "(docs/performance.md, bench/channel_end_spread.py)",
        [&](const Col& c) {
          const bool walls = is_ode(c) && ode_opt(c).value("end_walls", false);
          return fmt::format("{:g} x {:g} m, side walls, ends {}", c.c.channel.length_m, c.c.channel.width_m,

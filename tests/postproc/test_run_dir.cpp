@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <brash/error.hpp>
+#include <brash/post/csv.hpp>
 #include <brash/post/report.hpp>
 
 #include "synthetic_run.hpp"
@@ -115,8 +116,7 @@ TEST(RunDir, ResistanceRisingThroughTheWindowIsFlagged) {
   EXPECT_NEAR(d["second_mean"].get<double>() - d["first_mean"].get<double>(), d["difference"].get<double>(),
               1e-12);
   EXPECT_NE(j["notes"].dump().find("not stationary over the window"), std::string::npos) << j["notes"];
-  std::ifstream md(dir / "report.md");
-  const std::string text((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());
+  const std::string text = brash::post::read_text_file(dir / "report.md");
   EXPECT_NE(text.find("**the record drifts**"), std::string::npos);
   fs::remove_all(dir);
 }
@@ -128,8 +128,7 @@ TEST(RunDir, PiecesGoneThroughTheChannelEndsAreReported) {
   write_synthetic_run(dir, r);
   const auto j = run_cli(dir);
   EXPECT_EQ(j["exits"].get<long>(), 46);
-  std::ifstream md(dir / "report.md");
-  const std::string text((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());
+  const std::string text = brash::post::read_text_file(dir / "report.md");
   EXPECT_NE(text.find("| pieces gone through the channel's ends | 46 |"), std::string::npos) << text;
   fs::remove_all(dir);
 }
@@ -283,8 +282,7 @@ TEST(RunDir, EarlyStopReplayTable) {
   const auto out = dir / "early.txt";
   const auto cmd = fmt::format("{} early-stop {} --rel-ci 0.05,0.001 > {} 2>&1", BRASH_POST_EXE, dir.string(), out.string());
   ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
-  std::ifstream in(out);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string text = brash::post::read_text_file(out);
   EXPECT_NE(text.find("| 0.05 | 25.425 | 43.5 % (1.77x) | 2.031 +- 0.0587 | +1.05 % | +0.55 |"), std::string::npos)
       << text;
   EXPECT_NE(text.find("| 0.001 | never"), std::string::npos) << text;
@@ -293,8 +291,7 @@ TEST(RunDir, EarlyStopReplayTable) {
   write_synthetic_run(dir, s);
   const auto cmd2 = fmt::format("{} early-stop {} > {} 2>&1", BRASH_POST_EXE, dir.string(), out.string());
   EXPECT_EQ(WEXITSTATUS(std::system(cmd2.c_str())), 2);
-  std::ifstream in2(out);
-  const std::string text2((std::istreambuf_iterator<char>(in2)), std::istreambuf_iterator<char>());
+  const std::string text2 = brash::post::read_text_file(out);
   EXPECT_NE(text2.find("the replay needs a finished run"), std::string::npos) << text2;
   fs::remove_all(dir);
 }

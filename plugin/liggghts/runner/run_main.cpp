@@ -1,16 +1,13 @@
 // brash-liggghts-run CASE_DIR: runs a case with LIGGGHTS end to end and writes the run layout of
 // docs/case_format.md (case.yaml, meta.json, hull_force.csv, particles/, restart/, log.txt), then calls
 // brash-post on it. Progress with ETA on the terminal.
-#include <fmt/format.h>
-#include <unistd.h>
-
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <fmt/format.h>
 #include <fstream>
 #include <functional>
 #include <iostream>
@@ -18,13 +15,15 @@
 #include <map>
 #include <optional>
 #include <sstream>
+#include <csignal>
+#include <unistd.h>
 
 #include "brash/case.hpp"
+#include "brash/post/blocking.hpp"
+#include "brash/post/early_stop.hpp"
 #include "brash/error.hpp"
 #include "brash/hull/mesh.hpp"
 #include "brash/packing.hpp"
-#include "brash/post/blocking.hpp"
-#include "brash/post/early_stop.hpp"
 #include "brash/run_layout.hpp"
 #include "brash/runner_setup.hpp"
 #include "liggghts_input.h"
@@ -197,8 +196,8 @@ struct EngineResult {
   long steps = 0;
   long atoms = 0;
   bool run_started = false;  // the thermo header came: the input (and a restart file) was read, the run began
-  double particle_steps =
-      0;  // atoms x steps summed over the thermo lines (also for a run killed before its end)
+  // atoms x steps summed over the thermo lines (also for a run killed before its end)
+  double particle_steps = 0;
   double t_first_s = -1, t_last_s = -1;  // model time of the first and the last thermo line (-1: none)
   long exits = -1;  // fix brash/exit's count of pieces gone through the channel's ends ("N in all"; -1: none)
   std::string error;
@@ -224,7 +223,7 @@ EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, c
   if (!pipe) throw std::runtime_error("cannot start " + cmd);
   const auto start = std::chrono::steady_clock::now();
   char buf[4096];
-  double last_print = -1, t_first = -1, last_csv = 0;
+  double last_print = -1, last_csv = 0;
   long prev_step = -1;
   double next_csv_t = csv_every_model_s > 0 ? csv_every_model_s : std::numeric_limits<double>::infinity();
   bool in_thermo = false;
@@ -261,7 +260,7 @@ EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, c
       if (prev_step >= 0 && step > prev_step) res.particle_steps += double(atoms) * double(step - prev_step);
       prev_step = step;
       res.t_last_s = t;
-      if (t_first < 0) t_first = res.t_first_s = t;  // a resumed run starts at its restart time
+      if (res.t_first_s < 0) res.t_first_s = t;  // a resumed run starts at its restart time
       if (early && early->rel_ci > 0 && !early->stopped &&
           t >= early->t0 + brash::post::kEarlyStopFirstCheckFraction * (early->t1 - early->t0)) {
         const auto r = resistance_since(hull_force_raws(run_dir), early->t0, t);
@@ -281,11 +280,11 @@ EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, c
         last_csv = elapsed;
         while (next_csv_t <= t + 1e-9) next_csv_t += csv_every_model_s;
         convert_hull_force(hull_force_raws(run_dir), run_dir / "hull_force.csv", t);
-        if (on_progress) on_progress(t_first, t, res.particle_steps);
+        if (on_progress) on_progress(res.t_first_s, t, res.particle_steps);
       }
-      if (elapsed - last_print >= print_every_s && t > t_first) {
+      if (elapsed - last_print >= print_every_s && t > res.t_first_s) {
         last_print = elapsed;
-        const double eta = elapsed * (duration_s - t) / (t - t_first);
+        const double eta = elapsed * (duration_s - t) / (t - res.t_first_s);
         std::fprintf(stderr, "%s[brash-liggghts] t = %.2f / %.2f s (%3.0f%%)  elapsed %.0f s  ETA %.0f s%s", tty ? "\r" : "",
                      t, duration_s, 100 * t / duration_s, elapsed, eta, tty ? "   " : "\n");
       }

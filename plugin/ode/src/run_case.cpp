@@ -367,9 +367,8 @@ RunResult run_case(const RunOptions& cli_options) {
     logln(
         fmt::format("guards every {} steps: NaN/Inf; box x [{:.4g}, {:.4g}] y [{:.4g}, {:.4g}] z [{:.4g}, "
                     "{:.4g}] m; zmax {:.4g} m; "
-                    "ke_max {:.4g} J; hull penetration {}; pieces beyond the x range leave the scene; (no dt "
-                    "check: ODE contacts are constraint joints, "
-                    "see docs/stability.md)",
+                    "ke_max {:.4g} J; hull penetration {}; pieces beyond the x range leave the scene; "
+                    "(no dt check: ODE contacts are constraint joints, see docs/stability.md)",
                     c.guards.every_steps, (*limits.box)[0], (*limits.box)[1], (*limits.box)[2],
                     (*limits.box)[3], (*limits.box)[4], (*limits.box)[5], *limits.z_max_m, *limits.ke_max_J,
                     hull_query ? fmt::format("> {:g} d (full closed hull, {} triangles)",

@@ -229,7 +229,6 @@ void World::retire(std::size_t i) {
   auto& s = spheres_.at(i);
   if (s.retired) return;
   s.retired = true;
-  ++retired_count_;
   dBodySetLinearVel(s.body, 0, 0, 0);
   dBodySetAngularVel(s.body, 0, 0, 0);
   dBodySetForce(s.body, 0, 0, 0);
@@ -238,6 +237,11 @@ void World::retire(std::size_t i) {
   dBodyDisable(s.body);
   dGeomDisable(s.geom);
   broad_spheres_stale_ = true;
+}
+
+std::size_t World::retired_count() const {
+  return static_cast<std::size_t>(
+      std::count_if(spheres_.begin(), spheres_.end(), [](const SphereRec& s) { return s.retired; }));
 }
 
 void World::apply_fluid() {
@@ -535,7 +539,6 @@ void World::load_state(restart::Reader& r) {
     throw std::runtime_error(fmt::format("restart holds {} spheres, {} walls, {} hull; the scene has {}, {}, {}", n, nw,
                                          hull ? "a" : "no", spheres_.size(), walls_.size(), hull_body_ ? "a" : "no"));
   restore_inexact_ = 0;
-  retired_count_ = 0;
   dRandSetSeed(static_cast<unsigned long>(r.get<std::uint64_t>()));
   stats_.steps = r.get<long>();
   stats_.particle_steps = r.get<long>();

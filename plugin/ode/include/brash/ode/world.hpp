@@ -147,7 +147,7 @@ class World {
   // particle files. Kept in restart files. The LIGGGHTS counterpart is fix brash/exit.
   void retire(std::size_t i);
   bool retired(std::size_t i) const { return spheres_[i].retired; }
-  std::size_t retired_count() const { return retired_count_; }
+  std::size_t retired_count() const;
 
   void set_hull_velocity(const Vec3& v);
   bool has_hull() const { return hull_body_ != nullptr; }
@@ -175,7 +175,6 @@ class World {
     bool retired = false;  // retire()
   };
   double max_radius_m_ = 0;
-  std::size_t retired_count_ = 0;
   static void near_callback(void* data, dGeomID a, dGeomID b);
   void collide_pair(dGeomID a, dGeomID b);
   void collide_tagged(dGeomID a, std::size_t tag_a, dGeomID b, std::size_t tag_b);  // tags: see world.cpp
