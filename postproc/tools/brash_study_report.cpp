@@ -532,7 +532,15 @@ void section_setup(Study& s, std::string& md) {
          return fmt::format("{}, {}", brash::to_string(c.c.fluid.ca_table),
                             brash::to_string(c.c.fluid.treatment));
        }},
-      {"drag (Eq. 1)", "C_D not stated", "sphere drag coefficient (docs/physics.md)",
+      {"fluid model",
+       "added mass: \"an added mass model is implemented into the existing fluid force model\" "
+       "(Eq. 1 drag); drag: Eq. 1 alone",
+       "the paper's words allow Eq. 2 replacing Eq. 1 (our added_mass, docs/physics.md) or Eq. 2 added to it "
+       "(our both): section (c), parameter fluid.model",
+       [](const Col& c) { return std::string(brash::to_string(c.c.fluid.model)); }},
+      {"drag (Eq. 1)", "C_D not stated",
+       "sphere drag coefficient (docs/physics.md); section (c), parameter "
+       "fluid.drag_coefficient",
        [](const Col& c) {
          return fmt::format("C_D = {:g}, {}", c.c.fluid.drag_coefficient,
                             brash::to_string(c.c.fluid.drag_law));
@@ -794,9 +802,14 @@ void section_sensitivity(Study& s, std::string& md) {
                       "| run | value | engine | fluid model | R model [N] ± CI95 | R full [kN] ± CI95 | Δ vs baseline [N] | Δ / CI | status |\n"
                       "|---|---|---|---|---|---|---|---|---|\n",
                       g, param.empty() ? "?" : param);
+    // a group that varies the fluid model itself compares every run with the baseline of its engine
+    const bool varies_model = param == "fluid.model";
+    const auto key = [&](const Run& r) {
+      return std::make_pair(r.engine, varies_model ? std::string() : r.model);
+    };
     std::map<std::pair<std::string, std::string>, const Run*> base;
     for (const auto& r : s.rows)
-      if (r.group == g && r.baseline && s.run_of(r).ok) base[{s.run_of(r).engine, s.run_of(r).model}] = &s.run_of(r);
+      if (r.group == g && r.baseline && s.run_of(r).ok) base[key(s.run_of(r))] = &s.run_of(r);
     for (const auto& row : s.rows) {
       if (row.group != g) continue;
       const Run& r = s.run_of(row);
@@ -807,7 +820,7 @@ void section_sensitivity(Study& s, std::string& md) {
         continue;
       }
       std::string d = "no baseline", dci = "—";
-      auto it = base.find({r.engine, r.model});
+      auto it = base.find(key(r));
       if (row.baseline) {
         d = "—";
       } else if (it != base.end()) {

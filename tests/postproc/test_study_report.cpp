@@ -155,6 +155,35 @@ TEST(StudyReport, TablesCarryValuesAndFailuresAreReported) {
   EXPECT_EQ(s["runs"].size(), 9u);
 }
 
+// A group that varies the fluid model itself (fluid.model: added_mass vs both) compares each run with the
+// baseline of its engine, whatever its model; other groups keep comparing like models only.
+TEST(StudyReport, FluidModelGroupComparesAcrossModels) {
+  const fs::path d = fresh_dir("fluid_model");
+  write_report(d / "runs/am", "liggghts", "added_mass", 0.482, 10.0, 1.0);
+  write_report(d / "runs/both", "liggghts", "both", 0.482, 13.0, 1.0);
+  write_report(d / "runs/drag", "liggghts", "drag", 0.482, 9.0, 1.0);
+  std::string m = kHeader;
+  m += "m0\tfluid_model\tadded mass\tfluid.model\tadded_mass\t1\tjbc_bench\t0\truns/am\tbrash-liggghts-run "
+       "am\n";
+  m += "m1\tfluid_model\tboth\tfluid.model\tboth\t0\tjbc_bench\t0\truns/both\tbrash-liggghts-run both\n";
+  m += "c0\tdrag_cd\tC_D 0.44\tfluid.drag_coefficient\t0.44\t1\tjbc_bench\t0\truns/am\tbrash-liggghts-run "
+       "am\n";
+  m += "c1\tdrag_cd\tC_D 1.0\tfluid.drag_coefficient\t1.0\t0\tjbc_bench\t0\truns/drag\tbrash-liggghts-run "
+       "drag\n";
+  std::ofstream(d / "manifest.tsv") << m;
+  ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --plot none", (d / "manifest.tsv").string(),
+                                    (d / "study.md").string())),
+            0)
+      << read(d / "tool.log");
+  const std::string md = read(d / "study.md");
+  EXPECT_NE(md.find("### fluid_model (parameter `fluid.model`)"), std::string::npos) << md;
+  // 3 / sqrt(1 + 1) = 2.12
+  EXPECT_NE(md.find("| both | liggghts | both | 13.00 ± 1.00 | "), std::string::npos) << md;
+  EXPECT_NE(md.find("+3.00 (+30.0 %) | +2.12 |"), std::string::npos) << md;
+  // the C_D group's drag run has no drag baseline (its baseline row is an added_mass run): not compared
+  EXPECT_NE(md.find("| no baseline | — |"), std::string::npos) << md;
+}
+
 // Section (a)'s figures: the Fig. 6 analog bar chart (data with our runs, the paper's numbers and our R_CH) and
 // each run's own force history / newest ice views copied next to the document; the folder is replaced each time.
 TEST(StudyReport, FiguresOfThePaperSectionAreCopiedAndPlotted) {
