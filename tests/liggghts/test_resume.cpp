@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -293,6 +294,14 @@ TEST(LiggghtsResume, KilledRunResumesToTheSameResult) {
   ASSERT_FALSE(so_far.empty());
   EXPECT_GE(so_far.back().t, 0.06 - 1e-9);  // at least up to the first restart time (a tenth of 0.6 s)
 
+  // the killed attempt's snapshots converted now (as when an attempt ends by itself), so the resumed attempt
+  // finds them as particles_<step>.csv beside its own dumps
+  const std::string rebuild = std::string("'") + BRASH_BIN_DIR + "/brash-liggghts-run' --rebuild-record '" +
+                              killed.string() + "' --no-post > '" + (dir / "rebuild.log").string() + "' 2>&1";
+  ASSERT_EQ(std::system(rebuild.c_str()), 0) << brash::test::read_text(dir / "rebuild.log");
+  EXPECT_NE(brash::test::read_text(dir / "rebuild.log").find("dump(s) converted"), std::string::npos)
+      << brash::test::read_text(dir / "rebuild.log");
+
   // the newest restart file cut short (a kill while it was written): the resume cannot read it and takes the
   // other
   const fs::path a_file = killed / "restart/a.restart", b_file = killed / "restart/b.restart";
@@ -320,6 +329,13 @@ TEST(LiggghtsResume, KilledRunResumesToTheSameResult) {
   EXPECT_GT(meta_resumed["particle_steps"].get<double>(), meta_full["particle_steps"].get<double>());
   EXPECT_EQ(meta_full["attempts"].size(), 1u);
 
+  // the snapshot index lists the snapshots of both attempts, as the uninterrupted run's does (it used to list
+  // only the resumed attempt's, so brash-post's band check and ParaView files missed the first attempt's)
+  const std::string index_full = brash::test::read_text(dir / "full/particles/index.csv");
+  EXPECT_EQ(std::count(index_full.begin(), index_full.end(), '\n'), 8)
+      << index_full;  // header + t = 0, 0.1 .. 0.6
+  EXPECT_EQ(brash::test::read_text(killed / "particles/index.csv"), index_full);
+
   const auto a = read_force(dir / "full/hull_force.csv"), b = read_force(killed / "hull_force.csv");
   ASSERT_EQ(a.size(), b.size());
   ASSERT_GT(a.size(), 50u);
@@ -333,11 +349,11 @@ TEST(LiggghtsResume, KilledRunResumesToTheSameResult) {
   EXPECT_NEAR(rb / ra, 1.0, 0.10) << ra << " vs " << rb;
 
   // --rebuild-record: the record from the raw files again, as the runner wrote it
-  const std::string rebuild = std::string("'") + BRASH_BIN_DIR + "/brash-liggghts-run' --rebuild-record '" +
-                              killed.string() + "' --no-post > '" + (dir / "rebuild.log").string() + "' 2>&1";
   const std::string record = brash::test::read_text(killed / "hull_force.csv");
+  fs::remove(killed / "particles/index.csv");
   ASSERT_EQ(std::system(rebuild.c_str()), 0) << brash::test::read_text(dir / "rebuild.log");
   EXPECT_EQ(brash::test::read_text(killed / "hull_force.csv"), record);
+  EXPECT_EQ(brash::test::read_text(killed / "particles/index.csv"), index_full);  // rebuilt too
   EXPECT_FALSE(nlohmann::json::parse(brash::test::read_text(killed / "meta.json")).contains("exits"));
   // ... and the count of pieces gone through the channel's ends from the last "N in all" of fix brash/exit
   std::ofstream(killed / "log.txt", std::ios::app)

@@ -14,6 +14,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <regex>
 #include <sstream>
 #include <csignal>
 #include <unistd.h>
@@ -112,13 +113,30 @@ std::vector<std::string> restart_candidates(const fs::path& run_dir) {
   return out;
 }
 
-// LIGGGHTS custom dumps -> particles/particles_<step>.csv (sorted by id) + particles/index.csv.
+// particles/index.csv from every particles_<step>.csv in the folder, by step: the snapshots of all attempts
+// of a resumed run (a resumed attempt rewrites those after its restart; the ones before it stay valid).
+void write_snapshot_index(const fs::path& run_dir, const brash::Case& c) {
+  std::map<long, std::string> snapshots;
+  const std::regex name_re(R"(particles_([0-9]+)\.csv)");
+  std::smatch m;
+  for (const auto& e : fs::directory_iterator(run_dir / "particles")) {
+    const std::string name = e.path().filename().string();
+    if (std::regex_match(name, m, name_re)) snapshots[std::stol(m[1])] = name;
+  }
+  std::string index = "step,t_s,file,hull_x_m\n";
+  for (const auto& [step, name] : snapshots) {
+    const double t = step * c.run.timestep_s;
+    index += fmt::format("{},{:.9g},{},{:.9g}\n", step, t, name, c.hull.start_x_m + c.ship.speed_m_s * t);
+  }
+  brash::run::write_atomic(run_dir / "particles" / "index.csv", index);
+}
+
+// LIGGGHTS custom dumps -> particles/particles_<step>.csv (sorted by id), then particles/index.csv.
 std::size_t convert_dumps(const fs::path& run_dir, const brash::Case& c) {
   std::vector<fs::path> dumps;
   for (const auto& e : fs::directory_iterator(run_dir / "particles"))
     if (e.path().filename().string().rfind("dump.", 0) == 0) dumps.push_back(e.path());
   std::sort(dumps.begin(), dumps.end());
-  std::string index = "step,t_s,file,hull_x_m\n";
   for (const auto& dump : dumps) {
     std::ifstream in(dump);
     std::string line;
@@ -155,10 +173,8 @@ std::size_t convert_dumps(const fs::path& run_dir, const brash::Case& c) {
     const std::string name = fmt::format("particles_{:010d}.csv", step);
     brash::run::write_atomic(run_dir / "particles" / name, csv);
     fs::remove(dump);
-    const double t = step * c.run.timestep_s;
-    index += fmt::format("{},{:.9g},{},{:.9g}\n", step, t, name, c.hull.start_x_m + c.ship.speed_m_s * t);
   }
-  brash::run::write_atomic(run_dir / "particles" / "index.csv", index);
+  write_snapshot_index(run_dir, c);
   return dumps.size();
 }
 
@@ -340,6 +356,14 @@ int main(int argc, char** argv) {
       const auto rows = convert_hull_force(raws, rebuild_dir / "hull_force.csv");
       std::cerr << "[brash-liggghts] " << (rebuild_dir / "hull_force.csv").string() << ": " << rows
                 << " rows from " << raws.size() << " raw file(s)\n";
+      // the snapshot index too (dumps a killed attempt left unconverted, and every attempt's snapshots)
+      if (fs::is_directory(rebuild_dir / "particles")) {
+        const brash::Case c = brash::load_case(rebuild_dir / "case.yaml");
+        const std::size_t converted = convert_dumps(rebuild_dir, c);
+        std::cerr << "[brash-liggghts] " << (rebuild_dir / "particles" / "index.csv").string()
+                  << ": every particles_<step>.csv"
+                  << (converted ? fmt::format(" ({} dump(s) converted)", converted) : "") << "\n";
+      }
       // and the count of pieces gone through the channel's ends, from the engine's log
       long exits = -1;
       std::ifstream log(rebuild_dir / "log.txt");
