@@ -390,6 +390,51 @@ bool any_paper_case(const std::vector<const Run*>& runs) {
   return std::any_of(runs.begin(), runs.end(), [](const Run* r) { return r->base_case == "jbc_ia_5kn"; });
 }
 
+// The paper's full-scale resistance for a fluid model: its added mass model (which `both` also reads) or
+// drag.
+double paper_full_kN(const std::string& model) {
+  using PV = brash::post::PaperValues;
+  return model == "added_mass" || model == "both" ? PV::added_mass_full_kN
+         : model == "drag"                        ? PV::drag_full_kN
+                                                  : NAN;
+}
+
+// Sensitivity groups (every group but paper, speed and engine), in manifest order.
+std::vector<std::string> sensitivity_groups(const Study& s) {
+  std::vector<std::string> groups;
+  for (const auto& r : s.rows)
+    if (r.group != "paper" && r.group != "speed" && r.group != "engine" &&
+        std::find(groups.begin(), groups.end(), r.group) == groups.end())
+      groups.push_back(r.group);
+  return groups;
+}
+
+// A sensitivity group's baseline for a run: the group's baseline row of the same engine and fluid model, or
+// of the same engine alone when the group varies the fluid model itself. nullptr if there is none (or it
+// failed).
+struct Baselines {
+  bool varies_model = false;
+  std::map<std::pair<std::string, std::string>, const Run*> by_key;
+  std::pair<std::string, std::string> key(const Run& r) const {
+    return {r.engine, varies_model ? std::string() : r.model};
+  }
+  const Run* of(const Run& r) const {
+    const auto it = by_key.find(key(r));
+    return it == by_key.end() ? nullptr : it->second;
+  }
+};
+Baselines baselines_of(Study& s, const std::string& group, std::string* param_out = nullptr) {
+  Baselines b;
+  std::string param;
+  for (const auto& r : s.rows)
+    if (r.group == group && !r.param.empty()) param = r.param;
+  b.varies_model = param == "fluid.model";
+  for (const auto& r : s.rows)
+    if (r.group == group && r.baseline && s.run_of(r).ok) b.by_key[b.key(s.run_of(r))] = &s.run_of(r);
+  if (param_out) *param_out = param;
+  return b;
+}
+
 void section_paper(Study& s, std::string& md) {
   md += "## (a) Paper comparison\n\n";
   std::vector<const Row*> rows;
@@ -412,10 +457,8 @@ void section_paper(Study& s, std::string& md) {
         "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Row* row : rows) {
     const Run& r = s.run_of(*row);
-    using PV = brash::post::PaperValues;
-    const std::string paper_R = r.model == "added_mass" ? num(PV::added_mass_full_kN, 0)
-                                : r.model == "drag"     ? num(PV::drag_full_kN, 0)
-                                                        : "n/a";
+    const double paper_kN = paper_full_kN(r.model);
+    const std::string paper_R = std::isfinite(paper_kN) ? num(paper_kN, 0) : "n/a";
     if (!r.ok) {
       md += fmt::format("| {} | {} | {} | {} | — | — | {} | — | 999 | — | {} | {} |\n", r.ref,
                         md_escape(row->label.empty() ? row->base_case : row->label), r.engine, r.model, paper_R,
@@ -582,6 +625,50 @@ void section_setup(Study& s, std::string& md) {
     for (const auto& c : cols) md += " " + md_escape(it.ours(c)) + " |";
     md += " " + it.why + " |\n";
   }
+  md += "\n";
+}
+
+// How far each completed paper-case run is from the paper's number, beside every candidate change the study
+// measured (section (c)'s groups): a candidate can close the gap only with the gap's sign and size.
+void section_gap(Study& s, std::string& md) {
+  std::string gaps;
+  for (const Run* r : completed_runs(s, "paper")) {
+    const double paper = paper_full_kN(r->model);
+    if (r->base_case != "jbc_ia_5kn" || !std::isfinite(paper)) continue;
+    gaps += fmt::format(
+        "- {} ({} {}): {} kN; the paper's {:.0f} kN is **{:+.1f} %** on it (± {:.1f} % from our "
+        "CI95 alone)\n",
+        r->ref, r->engine, r->model, pm(r->full_kN, r->full_ci_kN, 1), paper,
+        100.0 * (paper / r->full_kN - 1.0), 100.0 * paper * r->full_ci_kN / (r->full_kN * r->full_kN));
+  }
+  if (gaps.empty()) return;  // nothing to explain yet
+  md += "### The gap to the paper, and the candidates the study measured\n\n" + gaps +
+        "\nEach candidate below is a change of one input, measured on the reduced case against its baseline "
+        "(section (c); one run per value, so a change inside its CI is not resolved). A candidate can close "
+        "the "
+        "gap only if its change has the gap's sign and a similar size; the set-up table above says which "
+        "inputs "
+        "the paper does not state.\n\n"
+        "| candidate (parameter: value) | engine, fluid model | change vs baseline ± CI95 | runs "
+        "|\n|---|---|---|---|\n";
+  bool any = false;
+  for (const auto& g : sensitivity_groups(s)) {
+    std::string param;
+    const Baselines base = baselines_of(s, g, &param);
+    for (const auto& row : s.rows) {
+      if (row.group != g || row.baseline) continue;
+      const Run& r = s.run_of(row);
+      const Run* b = r.ok ? base.of(r) : nullptr;
+      if (!b) continue;
+      const double rel = r.mean_N / b->mean_N - 1.0;
+      const double ci = std::hypot(r.ci_N, b->ci_N) / b->mean_N;
+      md += fmt::format("| {}: {} | {}, {} | {:+.1f} % ± {:.1f} %{} | {} vs {} |\n",
+                        param.empty() ? g : param, md_escape(row.value), r.engine, r.model, 100.0 * rel,
+                        100.0 * ci, std::abs(rel) < ci ? " (not resolved)" : "", r.ref, b->ref);
+      any = true;
+    }
+  }
+  if (!any) md += "| — | — | no completed sensitivity run with a baseline | — |\n";
   md += "\n";
 }
 
@@ -784,32 +871,22 @@ void section_speed(Study& s, std::string& md, const fs::path& plot_png, json& su
 
 void section_sensitivity(Study& s, std::string& md) {
   md += "## (c) Sensitivities\n\n";
-  std::vector<std::string> groups;
-  for (const auto& r : s.rows)
-    if (r.group != "paper" && r.group != "speed" && r.group != "engine" &&
-        std::find(groups.begin(), groups.end(), r.group) == groups.end())
-      groups.push_back(r.group);
+  const auto groups = sensitivity_groups(s);
   for (const char* expected : {"ca", "friction_ice", "density_ice"})
     if (std::find(groups.begin(), groups.end(), expected) == groups.end())
       md += fmt::format("Group `{}`: no run in this study.\n\n", expected);
   for (const auto& g : groups) {
     std::string param;
-    for (const auto& r : s.rows)
-      if (r.group == g && !r.param.empty()) param = r.param;
-    md += fmt::format("### {} (parameter `{}`)\n\nChange vs the baseline of the same engine and fluid model; "
-                      "\"Δ / CI\" = change over the combined CI95 sqrt(CI² + CI_base²): |Δ / CI| < 1 means the "
-                      "change is not resolved by these runs.\n\n"
-                      "| run | value | engine | fluid model | R model [N] ± CI95 | R full [kN] ± CI95 | Δ vs baseline [N] | Δ / CI | status |\n"
-                      "|---|---|---|---|---|---|---|---|---|\n",
-                      g, param.empty() ? "?" : param);
-    // a group that varies the fluid model itself compares every run with the baseline of its engine
-    const bool varies_model = param == "fluid.model";
-    const auto key = [&](const Run& r) {
-      return std::make_pair(r.engine, varies_model ? std::string() : r.model);
-    };
-    std::map<std::pair<std::string, std::string>, const Run*> base;
-    for (const auto& r : s.rows)
-      if (r.group == g && r.baseline && s.run_of(r).ok) base[key(s.run_of(r))] = &s.run_of(r);
+    const Baselines base = baselines_of(s, g, &param);
+    md += fmt::format(
+        "### {} (parameter `{}`)\n\nChange vs the baseline of the same engine and fluid model{}; "
+        "\"Δ / CI\" = change over the combined CI95 sqrt(CI² + CI_base²): |Δ / CI| < 1 means the "
+        "change is not resolved by these runs.\n\n"
+        "| run | value | engine | fluid model | R model [N] ± CI95 | R full [kN] ± CI95 | Δ vs baseline [N] "
+        "| Δ / CI | status |\n"
+        "|---|---|---|---|---|---|---|---|---|\n",
+        g, param.empty() ? "?" : param,
+        base.varies_model ? " (here the same engine: the group varies the fluid model)" : "");
     for (const auto& row : s.rows) {
       if (row.group != g) continue;
       const Run& r = s.run_of(row);
@@ -820,14 +897,12 @@ void section_sensitivity(Study& s, std::string& md) {
         continue;
       }
       std::string d = "no baseline", dci = "—";
-      auto it = base.find(key(r));
       if (row.baseline) {
         d = "—";
-      } else if (it != base.end()) {
-        const Run& b = *it->second;
-        const double delta = r.mean_N - b.mean_N;
-        const double comb = std::hypot(r.ci_N, b.ci_N);
-        d = fmt::format("{:+.2f} ({:+.1f} %)", delta, delta / b.mean_N * 100.0);
+      } else if (const Run* b = base.of(r)) {
+        const double delta = r.mean_N - b->mean_N;
+        const double comb = std::hypot(r.ci_N, b->ci_N);
+        d = fmt::format("{:+.2f} ({:+.1f} %)", delta, delta / b->mean_N * 100.0);
         dci = comb > 0 ? fmt::format("{:+.2f}", delta / comb) : "n/a";
       }
       md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", r.ref, md_escape(value), r.engine, r.model,
@@ -921,6 +996,7 @@ int main(int argc, char** argv) {
     section_failures(s, md);
     section_paper(s, md);
     section_setup(s, md);
+    section_gap(s, md);
     if (figures != "none")
       section_figures(s, md,
                       figures.empty() ? out_p.parent_path() / (out_p.stem().string() + "_figs") : fs::path(figures),

@@ -184,6 +184,51 @@ TEST(StudyReport, FluidModelGroupComparesAcrossModels) {
   EXPECT_NE(md.find("| no baseline | — |"), std::string::npos) << md;
 }
 
+// A completed paper-case run gets its gap to the paper's number, and every sensitivity change with a baseline
+// is listed beside it (sign, size, CI, whether resolved); without a paper-case result there is no such
+// section.
+TEST(StudyReport, GapToThePaperListsEveryMeasuredCandidate) {
+  const fs::path d = fresh_dir("gap");
+  write_report(d / "runs/paper", "liggghts", "added_mass", 0.482, 12.0, 0.6);
+  write_report(d / "runs/am", "liggghts", "added_mass", 0.482, 10.0, 1.0);
+  write_report(d / "runs/both", "liggghts", "both", 0.482, 13.0, 1.0);
+  write_report(d / "runs/rho", "liggghts", "added_mass", 0.482, 10.5, 1.0);
+  std::string m = kHeader;
+  m += "p\tpaper\tpaper case\t\t\t1\tjbc_ia_5kn\t0\truns/paper\tbrash-liggghts-run paper\n";
+  m += "m0\tfluid_model\tam\tfluid.model\tadded_mass\t1\tjbc_bench\t0\truns/am\tbrash-liggghts-run am\n";
+  m += "m1\tfluid_model\tboth\tfluid.model\tboth\t0\tjbc_bench\t0\truns/both\tbrash-liggghts-run both\n";
+  m += "r0\tdensity_ice\t900\tice.density_kg_m3\t900\t1\tjbc_bench\t0\truns/am\tbrash-liggghts-run am\n";
+  m += "r1\tdensity_ice\t850\tice.density_kg_m3\t850\t0\tjbc_bench\t0\truns/rho\tbrash-liggghts-run rho\n";
+  std::ofstream(d / "manifest.tsv") << m;
+  ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --plot none", (d / "manifest.tsv").string(),
+                                    (d / "study.md").string())),
+            0)
+      << read(d / "tool.log");
+  const std::string md = read(d / "study.md");
+  const double full = 12.0 * std::pow(28.5, 3) * 1.025 / 1000.0;
+  ASSERT_NE(md.find("### The gap to the paper"), std::string::npos) << md;
+  EXPECT_NE(md.find(fmt::format("the paper's 393 kN is **{:+.1f} %** on it", 100.0 * (393.0 / full - 1.0))),
+            std::string::npos)
+      << md;
+  // both: +30 % +- sqrt(2) * 10 % = 14.1 %, resolved; rho 850: +5 % +- 14.1 %, not resolved
+  EXPECT_NE(md.find("| fluid.model: both | liggghts, both | +30.0 % ± 14.1 % | R3 vs R2 |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(
+      md.find(
+          "| ice.density_kg_m3: 850 | liggghts, added_mass | +5.0 % ± 14.1 % (not resolved) | R4 vs R2 |"),
+      std::string::npos)
+      << md;
+  // without the paper-case run: no gap section
+  std::string m2 = kHeader;
+  m2 += m.substr(m.find("m0\t"));
+  std::ofstream(d / "manifest2.tsv") << m2;
+  ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --plot none", (d / "manifest2.tsv").string(),
+                                    (d / "study2.md").string())),
+            0);
+  EXPECT_EQ(read(d / "study2.md").find("### The gap to the paper"), std::string::npos);
+}
+
 // Section (a)'s figures: the Fig. 6 analog bar chart (data with our runs, the paper's numbers and our R_CH) and
 // each run's own force history / newest ice views copied next to the document; the folder is replaced each time.
 TEST(StudyReport, FiguresOfThePaperSectionAreCopiedAndPlotted) {
