@@ -170,6 +170,8 @@ TEST(StudyReport, FluidModelGroupComparesAcrossModels) {
        "am\n";
   m += "c1\tdrag_cd\tC_D 1.0\tfluid.drag_coefficient\t1.0\t0\tjbc_bench\t0\truns/drag\tbrash-liggghts-run "
        "drag\n";
+  for (const char* model : {"am", "both", "drag"})
+    m += fmt::format("p_{0}\tpaper\t{0}\t\t\t1\tjbc_bench\t0\truns/{0}\tbrash-liggghts-run {0}\n", model);
   std::ofstream(d / "manifest.tsv") << m;
   ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --plot none", (d / "manifest.tsv").string(),
                                     (d / "study.md").string())),
@@ -182,6 +184,12 @@ TEST(StudyReport, FluidModelGroupComparesAcrossModels) {
   EXPECT_NE(md.find("+3.00 (+30.0 %) | +2.12 |"), std::string::npos) << md;
   // the C_D group's drag run has no drag baseline (its baseline row is an added_mass run): not compared
   EXPECT_NE(md.find("| no baseline | — |"), std::string::npos) << md;
+  // section (a): both readings of the paper's added-mass model against drag (13 / 9 - 1, 10 / 9 - 1)
+  EXPECT_NE(md.find("| liggghts | jbc_bench | both | 13.00 ± 1.00 (R2) | 9.00 ± 1.00 (R3) | +44.4 % |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| liggghts | jbc_bench | added_mass | 10.00 ± 1.00 (R1) | 9.00 ± 1.00 (R3) | +11.1 % |"),
+            std::string::npos);
 }
 
 // A completed paper-case run gets its gap to the paper's number, and every sensitivity change with a baseline
