@@ -587,11 +587,12 @@ void section_setup(Study& s, std::string& md) {
        "added mass: \"an added mass model is implemented into the existing fluid force model\" "
        "(Eq. 1 drag); drag: Eq. 1 alone",
        "the paper's words allow Eq. 2 replacing Eq. 1 (our added_mass, docs/physics.md) or Eq. 2 added to it "
-       "(our both): section (c), parameter fluid.model",
+       "(our both); the paper's +4 % over drag is what both gives (added_mass is ~45 % below drag): "
+       "docs/paper_gap.md, section (c) parameter fluid.model",
        [](const Col& c) { return std::string(brash::to_string(c.c.fluid.model)); }},
       {"drag (Eq. 1)", "C_D not stated",
-       "sphere drag coefficient (docs/physics.md); section (c), parameter "
-       "fluid.drag_coefficient",
+       "sphere drag coefficient (docs/physics.md); with drag in, C_D sets the level: "
+       "docs/paper_gap.md, section (c) parameter fluid.drag_coefficient",
        [](const Col& c) {
          return fmt::format("C_D = {:g}, {}", c.c.fluid.drag_coefficient,
                             brash::to_string(c.c.fluid.drag_law));
