@@ -478,12 +478,11 @@ void section_paper(Study& s, std::string& md) {
   // added to Eq. 1), the two readings of the paper's added-mass model, each against drag.
   md +=
       "\nAdded mass vs drag (same engine and case): (R_added - R_drag) / R_drag, where R_added is the "
-      "added-mass "
-      "model read as Eq. 2 alone (`added_mass`) or Eq. 2 added to the Eq. 1 drag (`both`); paper: (393 - "
-      "378) / "
-      "378 = +4.0 %.\n\n| engine | case | added-mass model | R added mass [N] | R drag [N] | difference | "
-      "CI95 "
-      "of the difference |\n|---|---|---|---|---|---|---|\n";
+      "added-mass model read as Eq. 2 alone (`added_mass`) or Eq. 2 added to the Eq. 1 drag (`both`); paper: "
+      "(393 - 378) / 378 = +4.0 %.\n\n"
+      "| engine | case | added-mass model | R added mass [N] | R drag [N] | difference | CI95 of the "
+      "difference |\n"
+      "|---|---|---|---|---|---|---|\n";
   std::map<std::pair<std::string, std::string>, std::map<std::string, const Run*>> by;
   for (const Row* row : rows) {
     const Run& r = s.run_of(*row);
@@ -657,9 +656,7 @@ void section_gap(Study& s, std::string& md) {
       "(section (c); one run per value, so a change inside its CI is not resolved; jbc_bench's window is the "
       "bow's first second in the ice, too short for the fluid models' difference to build up, jbc_quick's is "
       "2-4 s). A candidate can close the gap only if its change has the gap's sign and a similar size; the "
-      "set-up table above says which "
-      "inputs "
-      "the paper does not state.\n\n"
+      "set-up table above says which inputs the paper does not state.\n\n"
       "| candidate (parameter: value) | case, engine, fluid model | change vs baseline ± CI95 | runs |\n"
       "|---|---|---|---|\n";
   bool any = false;
