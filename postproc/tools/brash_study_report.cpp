@@ -586,8 +586,8 @@ void section_setup(Study& s, std::string& md) {
        "added mass: \"an added mass model is implemented into the existing fluid force model\" "
        "(Eq. 1 drag); drag: Eq. 1 alone",
        "the paper's words allow Eq. 2 replacing Eq. 1 (our added_mass, docs/physics.md) or Eq. 2 added to it "
-       "(our both); the paper's +4 % over drag is what both gives (added_mass is ~45 % below drag): "
-       "docs/paper_gap.md, section (c) parameter fluid.model",
+       "(our both); section (a)'s \"added mass vs drag\" table gives each against drag, the paper's +4 % is "
+       "what both gives: docs/paper_gap.md, section (c) parameter fluid.model",
        [](const Col& c) { return std::string(brash::to_string(c.c.fluid.model)); }},
       {"drag (Eq. 1)", "C_D not stated",
        "sphere drag coefficient (docs/physics.md); with drag in, C_D sets the level: "
@@ -608,10 +608,9 @@ void section_setup(Study& s, std::string& md) {
                                 : "far field, window alone (biased high)");
        }},
       {"channel ends", "21.0 x 2.25 m; what bounds the ends is not stated",
-       "open ends let the floating bed relax into open water: on the LIGGGHTS added_mass paper run "
-       "5.3 % of the pieces drifted past the far end by 40 s, and the relaxation from there met the "
-       "bow's push at ~30 s; an end wall would be the frozen wall the far-field ensembles measured "
-       "(docs/performance.md, bench/channel_end_spread.py)",
+       "open ends let the floating bed relax into open water, and late in a run that relaxation meets the "
+       "bow's push (bench/channel_end_spread.py on each paper run, docs/paper_gap.md); an end wall would be "
+       "the frozen wall the far-field ensembles measured (docs/performance.md)",
        [&](const Col& c) {
          const bool walls = is_ode(c) && ode_opt(c).value("end_walls", false);
          return fmt::format("{:g} x {:g} m, side walls, ends {}", c.c.channel.length_m, c.c.channel.width_m,
