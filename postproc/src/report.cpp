@@ -312,7 +312,12 @@ std::string report_markdown(const RunAnalysis& a) {
                       r->R_CH_N / 1000, r->H_F_m, r->H_M_m, r->Cmu, r->Cpsi, r->LTB3_raw, r->LTB3_used);
   for (const auto& wmsg : a.fsicr.warnings) md += fmt::format("- warning: {}\n", wmsg);
   md += "\n";
-  if (a.ratio_fsicr_to_sim) md += fmt::format("FSICR / simulation = **{:.2f}** (paper: 2.54).\n", *a.ratio_fsicr_to_sim);
+  if (a.ratio_fsicr_to_sim)
+    md += fmt::format(
+        "FSICR / simulation = **{:.2f}** (paper: {:.2f} with its added-mass model, stated; {:.0f} / {:.0f} = "
+        "{:.2f} with drag).\n",
+        *a.ratio_fsicr_to_sim, PaperValues::stated_ratio_added_mass, PaperValues::fsicr_R_CH_kN,
+        PaperValues::drag_full_kN, PaperValues::fsicr_R_CH_kN / PaperValues::drag_full_kN);
   return md;
 }
 

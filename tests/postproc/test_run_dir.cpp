@@ -86,6 +86,10 @@ TEST(RunDir, ReportJsonHasEveryKeyWithCorrectValues) {
   EXPECT_NEAR(j["fsicr"]["intermediate"]["H_F_m"].get<double>(), 5.917, 5e-4);
   EXPECT_NEAR(j["ratio_fsicr_to_sim"].get<double>(),
               j["fsicr"]["R_CH_kN"].get<double>() / j["resistance_full_kN"].get<double>(), 1e-12);
+  // the paper states its ratio (2.54) for the added-mass result only; the drag one is 999 / 378
+  EXPECT_NE(brash::post::read_text_file(dir / "report.md")
+                .find("(paper: 2.54 with its added-mass model, stated; 999 / 378 = 2.64 with drag)"),
+            std::string::npos);
   EXPECT_EQ(j["wall_time_s"].get<double>(), 123.5);
   EXPECT_EQ(j["particle_steps"].get<double>(), 4.2e9);
   EXPECT_EQ(j["exits"].get<long>(), 0);  // no meta.json "exits": none
