@@ -290,6 +290,29 @@ TEST(StudyReport, FiguresOfThePaperSectionAreCopiedAndPlotted) {
   EXPECT_FALSE(fs::exists(figs));
 }
 
+// Once a paper-case run is complete, the Fig. 6 analog shows the paper case's runs alone: a reduced case's
+// lambda^3-scaled number is not the paper's ship in the paper's channel.
+TEST(StudyReport, Fig6BarsShowThePaperCaseAloneWhenItIsThere) {
+  const fs::path d = fresh_dir("bars");
+  write_report(d / "runs/am", "liggghts", "added_mass", 0.482, 12.5, 1.5);
+  write_report(d / "runs/paper", "liggghts", "drag", 0.482, 23.0, 0.1);
+  std::string m = kHeader;
+  m += "p1\tpaper\tam\t\t\t1\tjbc_bench\t0\truns/am\tbrash-liggghts-run am\n";
+  m += "p2\tpaper\tpaper drag\t\t\t1\tjbc_ia_5kn\t0\truns/paper\tbrash-liggghts-run paper\n";
+  std::ofstream(d / "manifest.tsv") << m;
+  ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --plot none", (d / "manifest.tsv").string(),
+                                    (d / "doc/study.md").string())),
+            0)
+      << read(d / "tool.log");
+  const std::string dat = read(d / "doc/study_figs/paper_bars.dat");
+  EXPECT_NE(dat.find("\"R2 liggghts drag\""), std::string::npos) << dat;
+  EXPECT_EQ(dat.find("\"R1 "), std::string::npos) << dat;
+  EXPECT_NE(dat.find("\"FSICR R_CH ours (R2)\""), std::string::npos) << dat;
+  EXPECT_EQ(read(d / "doc/study_figs/paper_bars.gp").find("REDUCED-CASE"), std::string::npos);
+  // both runs still have their Fig. 5 analog text and their row in section (a)
+  EXPECT_NE(read(d / "doc/study.md").find("| R1 | **reduced case**"), std::string::npos);
+}
+
 TEST(StudyReport, BadManifestIsAnError) {
   const fs::path d = fresh_dir("bad");
   std::ofstream(d / "manifest.tsv") << "group\trun_dir\n";  // no command column
