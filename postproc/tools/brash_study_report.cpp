@@ -9,27 +9,28 @@
 // manifest's folder unless absolute.
 // Groups: `paper` (table a), `speed` (table b, value = speed), `engine` (table d), anything else is a
 // sensitivity group (table c) whose rows with baseline = 1 are the reference.
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
 #include <algorithm>
+#include <array>
+#include <brash/case.hpp>
+#include <brash/post/force_history.hpp>
+#include <brash/post/report.hpp>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
-#include <tuple>
 #include <string>
+#include <tuple>
 #include <vector>
-
-#include <CLI/CLI.hpp>
-#include <fmt/format.h>
-#include <nlohmann/json.hpp>
-
-#include <brash/case.hpp>
-#include <brash/post/report.hpp>
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -704,10 +705,103 @@ std::string run_gnuplot(const fs::path& gp, const fs::path& png) {
   return fmt::format("`gnuplot {}` failed (exit {}); see `{}.err`", gp.string(), rc, gp.string());
 }
 
-// Fig. 4, 5 and 6 analogs for the runs of section (a), next to the document in FIG_DIR (its previous content is
-// replaced): a bar chart of every run's full-scale resistance with its CI against the paper's numbers and our
-// R_CH (Fig. 6), and each run's own force history (Fig. 5) and ice views from above and below (Fig. 4, first
-// run of each engine), copied from the run directories that brash-post wrote them to.
+// Fig. 4, 5 and 6 analogs for the runs of section (a), next to the document in FIG_DIR (its previous content
+// is replaced): a bar chart of every run's full-scale resistance with its CI against the paper's numbers and
+// our R_CH (Fig. 6), and each run's own force history (Fig. 5) and ice views from above and below (Fig. 4,
+// first run of each engine), copied from the run directories that brash-post wrote them to. The paper case's
+// resistance histories in one plot (full scale, 0.5 s bin means of -fx; runs still going too, up to where
+// their record is): the shape of each fluid model's history beside the paper's two levels, which is what
+// tells a plateau from a rise.
+void section_paper_histories(Study& s, std::string& md, const fs::path& fig_dir,
+                             const std::function<std::string(const std::string&)>& link) {
+  constexpr double kBin_s = 0.5;
+  struct Line {
+    std::string title;
+    std::vector<std::pair<double, double>> t_kN;  // bin centre, bin mean (NAN: no row in the bin)
+  };
+  std::vector<Line> lines;
+  std::set<fs::path> seen;
+  std::array<double, 2> window{NAN, NAN};
+  for (const auto& row : s.rows) {
+    const Run& r = s.run_of(row);
+    if (row.group != "paper" || row.base_case != "jbc_ia_5kn" || r.run_dir.empty() ||
+        !seen.insert(r.run_dir).second || !fs::exists(r.run_dir / "hull_force.csv") ||
+        !fs::exists(r.run_dir / "case.yaml"))
+      continue;
+    try {
+      const brash::Case c = brash::load_case(r.run_dir / "case.yaml");
+      const auto h = brash::post::read_force_history(r.run_dir / "hull_force.csv", !r.ok);
+      if (h.t_s.empty()) continue;
+      window = c.run.window_s;
+      const double kN_per_N = std::pow(c.ship.scale_lambda, 3) / 1000.0;
+      Line l;
+      l.title = fmt::format("{} {} {}{}", r.ref, r.engine, brash::to_string(c.fluid.model),
+                            r.ok ? "" : fmt::format(" (in progress, t = {:.1f} s)", h.t_s.back()));
+      const auto nbins = static_cast<std::size_t>(std::ceil(h.t_s.back() / kBin_s));
+      std::vector<double> sum(nbins + 1, 0.0);
+      std::vector<int> n(nbins + 1, 0);
+      for (std::size_t i = 0; i < h.t_s.size(); ++i) {
+        const auto b = std::min(nbins, static_cast<std::size_t>(h.t_s[i] / kBin_s));
+        sum[b] -= h.fx_N[i];
+        ++n[b];
+      }
+      for (std::size_t b = 0; b < nbins; ++b)
+        l.t_kN.emplace_back((b + 0.5) * kBin_s, n[b] ? sum[b] / n[b] * kN_per_N : NAN);
+      lines.push_back(std::move(l));
+    } catch (const std::exception& e) {
+      md += fmt::format("(history of {} not readable: {})\n\n", r.ref, e.what());
+    }
+  }
+  if (lines.empty()) return;
+  using PV = brash::post::PaperValues;
+  const fs::path dat = fig_dir / "paper_histories.dat", gp = fig_dir / "paper_histories.gp",
+                 png = fig_dir / "paper_histories.png";
+  {
+    std::ofstream d(dat);
+    d << "# full-scale resistance [kN], 0.5 s bin means of -fx; one block per run (blank line: a bin without "
+         "rows)\n";
+    for (const auto& l : lines) {
+      d << "# " << l.title << "\n";
+      bool broken = false;  // one blank line per run of empty bins: two would start a new gnuplot index
+      for (const auto& [t, kN] : l.t_kN) {
+        if (std::isfinite(kN))
+          d << fmt::format("{} {}\n", t, kN);
+        else if (!broken)
+          d << "\n";
+        broken = !std::isfinite(kN);
+      }
+      d << "\n\n";
+    }
+    std::ofstream p(gp);
+    p << "set terminal pngcairo size 1100,550\nset output '" << png.filename().string() << "'\n"
+      << "set termoption noenhanced\nset grid\nset key right bottom\nset yrange [0:*]\n"
+      << "set xlabel 'model time t [s]'\nset ylabel 'full-scale resistance [kN] (-fx x lambda^3, 0.5 s "
+         "means)'\n"
+      << "set title 'The paper case: resistance histories of our runs and the paper levels'\n"
+      << fmt::format(
+             "set object 1 rect from {},graph 0 to {},graph 1 fc rgb '#eeeeee' fs solid 1 noborder behind\n",
+             window[0], window[1])
+      << "plot ";
+    for (std::size_t i = 0; i < lines.size(); ++i)
+      p << fmt::format("'{}' index {} using 1:2 with lines lw 2 title '{}', ", dat.filename().string(), i,
+                       lines[i].title);
+    p << fmt::format("{} with lines dt 2 lc rgb 'black' title 'paper added mass ({:.0f} kN)', ",
+                     PV::added_mass_full_kN, PV::added_mass_full_kN)
+      << fmt::format("{} with lines dt 3 lc rgb 'black' title 'paper drag ({:.0f} kN)'\n", PV::drag_full_kN,
+                     PV::drag_full_kN);
+  }
+  const std::string err = run_gnuplot(gp, png);
+  if (err.empty())
+    md += fmt::format(
+        "![paper-case resistance histories]({})\n\nThe paper case's resistance histories (`{}`, data `{}`): "
+        "full scale, 0.5 s means of the hull's x force, window shaded, the paper's two levels dashed (its "
+        "Fig. 5 "
+        "shows a plateau from ~15 s).\n\n",
+        link(png.filename().string()), link(png.filename().string()), link(dat.filename().string()));
+  else
+    md += "Paper-case history plot not produced: " + err + ".\n\n";
+}
+
 void section_figures(Study& s, std::string& md, const fs::path& fig_dir, const fs::path& doc_dir) {
   md += "### Figures (analogs of the paper's Fig. 4, 5 and 6)\n\n";
   const auto runs = completed_runs(s, "paper");
@@ -765,6 +859,7 @@ void section_figures(Study& s, std::string& md, const fs::path& fig_dir, const f
                   : "our runs, reduced cases");
   else
     md += "Fig. 6 analog not produced: " + err + ".\n\n";
+  section_paper_histories(s, md, fig_dir, link);
   // Fig. 5 and 4 analogs: the runs' own plots
   std::set<std::string> engines_with_views;
   for (const Run* r : runs) {

@@ -313,6 +313,59 @@ TEST(StudyReport, Fig6BarsShowThePaperCaseAloneWhenItIsThere) {
   EXPECT_NE(read(d / "doc/study.md").find("| R1 | **reduced case**"), std::string::npos);
 }
 
+// The paper case's histories in one plot: every paper-case run with a force record, runs still going too (up
+// to their last complete row), 0.5 s bin means at full scale; a stretch without rows breaks the line without
+// starting a new gnuplot data set (two blank lines would, and shift every later run's title).
+TEST(StudyReport, PaperCaseHistoriesShowEveryRunAndBreakAtGaps) {
+  const fs::path d = fresh_dir("histories");
+  write_report(d / "runs/a", "liggghts", "added_mass", 0.482, 2.0, 0.1);
+  fs::create_directories(d / "runs/b");
+  std::ofstream(d / "runs/a/case.yaml") << "name: jbc_ia_5kn\nfluid: {model: added_mass}\n";
+  std::ofstream(d / "runs/b/case.yaml") << "name: jbc_ia_5kn\nfluid: {model: drag}\n";
+  std::ofstream(d / "runs/b/meta.json") << json{{"engine", "liggghts"}, {"fluid_model", "drag"}}.dump();
+  {
+    std::ofstream a(d / "runs/a/hull_force.csv");
+    a << "t_s,fx_N,fy_N,fz_N\n";
+    for (int k = 0; k <= 30; ++k)
+      if (k < 10 || k >= 20) a << fmt::format("{:.1f},-2,0,0\n", 0.1 * k);  // no rows in 1.0-2.0 s
+    std::ofstream b(d / "runs/b/hull_force.csv");
+    b << "t_s,fx_N,fy_N,fz_N\n";
+    for (int k = 0; k <= 10; ++k) b << fmt::format("{:.1f},-4,0,0\n", 0.1 * k);
+    b << "1.1,-4,0";  // the row being written
+  }
+  std::string m = kHeader;
+  m += "pa\tpaper\tpaper am\t\t\t1\tjbc_ia_5kn\t0\truns/a\tcmd a\n";
+  m += "pb\tpaper\tpaper drag\t\t\t1\tjbc_ia_5kn\tin progress: model time 1.1 s of 40 s reached\truns/b\tcmd "
+       "b\n";
+  std::ofstream(d / "manifest.tsv") << m;
+  ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --plot none", (d / "manifest.tsv").string(),
+                                    (d / "doc/study.md").string())),
+            0)
+      << read(d / "tool.log");
+  const std::string dat = read(d / "doc/study_figs/paper_histories.dat");
+  const double kN = std::pow(28.5, 3) / 1000.0;
+  EXPECT_NE(dat.find("# R1 liggghts added_mass\n0.25 " + fmt::format("{}", 2.0 * kN)), std::string::npos)
+      << dat;
+  EXPECT_NE(dat.find("# R2 liggghts drag (in progress, t = 1.0 s)\n0.25 " + fmt::format("{}", 4.0 * kN)),
+            std::string::npos)
+      << dat;
+  // R1: bins 0-1 s, one blank line for the empty 1.0-2.0 s, bins 2-3 s; data sets end with two blank lines
+  EXPECT_NE(dat.find(fmt::format("0.75 {}\n\n2.25 {}\n", 2.0 * kN, 2.0 * kN)), std::string::npos) << dat;
+  std::size_t sets = 0;
+  for (auto at = dat.find("\n\n\n"); at != std::string::npos; at = dat.find("\n\n\n", at + 3)) ++sets;
+  EXPECT_EQ(sets, 2u) << dat;
+  const std::string gp = read(d / "doc/study_figs/paper_histories.gp");
+  EXPECT_NE(gp.find("index 0 using 1:2 with lines lw 2 title 'R1 liggghts added_mass'"), std::string::npos)
+      << gp;
+  EXPECT_NE(gp.find("index 1 using 1:2 with lines lw 2 title 'R2 liggghts drag (in progress"),
+            std::string::npos);
+  if (std::system("command -v gnuplot > /dev/null 2>&1") == 0) {
+    EXPECT_NE(
+        read(d / "doc/study.md").find("![paper-case resistance histories](study_figs/paper_histories.png)"),
+        std::string::npos);
+  }
+}
+
 TEST(StudyReport, BadManifestIsAnError) {
   const fs::path d = fresh_dir("bad");
   std::ofstream(d / "manifest.tsv") << "group\trun_dir\n";  // no command column
