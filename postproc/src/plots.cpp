@@ -98,7 +98,12 @@ fs::path plot_resistance_bars(const RunAnalysis& a, const fs::path& out_dir, con
   d += fmt::format("2 \"paper simulation\\n({})\" {} 0 2\n", a.meta.fluid_model == "drag" ? "drag" : "added mass", paper_sim);
   d += fmt::format("3 \"paper FSICR\" {} 0 2\n", PaperValues::fsicr_R_CH_kN);
   brash::run::write_atomic(data, d);
-  const std::string ratio = a.ratio_fsicr_to_sim ? fmt::format("FSICR / simulation = {:.2f} (paper 2.54)", *a.ratio_fsicr_to_sim) : "R_CH not available";
+  const std::string ratio =
+      a.ratio_fsicr_to_sim
+          ? fmt::format("FSICR / simulation = {:.2f} (paper: {:.2f} added mass, 999 / 378 = {:.2f} drag)",
+                        *a.ratio_fsicr_to_sim, PaperValues::stated_ratio_added_mass,
+                        PaperValues::fsicr_R_CH_kN / PaperValues::drag_full_kN)
+          : "R_CH not available";
   const std::string body = fmt::format(R"(set title 'Full-scale channel resistance (lambda = {}): {}'
 set ylabel 'resistance [kN]'
 set yrange [0:*]
