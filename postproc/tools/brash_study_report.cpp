@@ -662,7 +662,8 @@ void section_gap(Study& s, std::string& md) {
   if (gaps.empty()) return;  // nothing to explain yet
   md +=
       "### The gap to the paper, and the candidates the study measured\n\n" + gaps +
-      "\nEach candidate below is a change of one input, measured on a reduced case against its baseline "
+      "\nEach candidate below is a change of one input, measured on a reduced case (or on the paper case itself, "
+      "group paper_candidates) against its baseline "
       "(section (c); one run per value, so a change inside its CI is not resolved; jbc_bench's window is the "
       "bow's first second in the ice, too short for the fluid models' difference to build up, jbc_quick's is "
       "2-4 s). A candidate can close the gap only if its change has the gap's sign and a similar size; the "
