@@ -102,7 +102,7 @@ fs::path plot_resistance_bars(const RunAnalysis& a, const fs::path& out_dir, con
       a.ratio_fsicr_to_sim
           ? fmt::format("FSICR / simulation = {:.2f} (paper: {:.2f} added mass, 999 / 378 = {:.2f} drag)",
                         *a.ratio_fsicr_to_sim, PaperValues::stated_ratio_added_mass,
-                        PaperValues::fsicr_R_CH_kN / PaperValues::drag_full_kN)
+                        PaperValues::derived_ratio_drag)
           : "R_CH not available";
   const std::string body = fmt::format(R"(set title 'Full-scale channel resistance (lambda = {}): {}'
 set ylabel 'resistance [kN]'

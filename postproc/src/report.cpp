@@ -317,7 +317,7 @@ std::string report_markdown(const RunAnalysis& a) {
         "FSICR / simulation = **{:.2f}** (paper: {:.2f} with its added-mass model, stated; {:.0f} / {:.0f} = "
         "{:.2f} with drag).\n",
         *a.ratio_fsicr_to_sim, PaperValues::stated_ratio_added_mass, PaperValues::fsicr_R_CH_kN,
-        PaperValues::drag_full_kN, PaperValues::fsicr_R_CH_kN / PaperValues::drag_full_kN);
+        PaperValues::drag_full_kN, PaperValues::derived_ratio_drag);
   return md;
 }
 

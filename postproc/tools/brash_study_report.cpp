@@ -9,28 +9,29 @@
 // manifest's folder unless absolute.
 // Groups: `paper` (table a), `speed` (table b, value = speed), `engine` (table d), anything else is a
 // sensitivity group (table c) whose rows with baseline = 1 are the reference.
-#include <fmt/format.h>
-
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <array>
-#include <brash/case.hpp>
-#include <brash/post/force_history.hpp>
-#include <brash/post/report.hpp>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <map>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
-#include <string>
 #include <tuple>
+#include <string>
 #include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <brash/case.hpp>
+#include <brash/post/force_history.hpp>
+#include <brash/post/report.hpp>
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -389,11 +390,25 @@ bool any_paper_case(const std::vector<const Run*>& runs) {
   return std::any_of(runs.begin(), runs.end(), [](const Run* r) { return r->base_case == "jbc_ia_5kn"; });
 }
 
+// The paper case's runs of section (a) that have started (their run folder holds the resolved case.yaml),
+// each once, in manifest order: what the set-up table and the history plot read, finished or not.
+std::vector<const Run*> started_paper_case_runs(Study& s) {
+  std::vector<const Run*> runs;
+  std::set<fs::path> seen;
+  for (const auto& row : s.rows) {
+    if (row.group != "paper" || row.base_case != "jbc_ia_5kn") continue;
+    const Run& r = s.run_of(row);
+    if (!r.run_dir.empty() && seen.insert(r.run_dir).second && fs::exists(r.run_dir / "case.yaml"))
+      runs.push_back(&r);
+  }
+  return runs;
+}
+
 // The paper's FSICR / simulation ratio for a fluid model: stated for its added-mass result (2.54), derived
 // from its two numbers for drag (999 / 378; the paper states no ratio for drag).
 std::string paper_ratio_cell(const std::string& model) {
   using PV = brash::post::PaperValues;
-  if (model == "drag") return fmt::format("{:.2f} (999 / 378)", PV::fsicr_R_CH_kN / PV::drag_full_kN);
+  if (model == "drag") return fmt::format("{:.2f} (999 / 378)", PV::derived_ratio_drag);
   return model == "added_mass" || model == "both" ? fmt::format("{:.2f}", PV::stated_ratio_added_mass)
                                                   : "n/a";
 }
@@ -527,11 +542,8 @@ void section_setup(Study& s, std::string& md) {
     json meta;
   };
   std::vector<Col> cols;
-  std::set<fs::path> seen;
-  for (const auto& row : s.rows) {
-    if (row.group != "paper" || row.base_case != "jbc_ia_5kn") continue;
-    const Run& r = s.run_of(row);
-    if (r.run_dir.empty() || !seen.insert(r.run_dir).second || !fs::exists(r.run_dir / "case.yaml")) continue;
+  for (const Run* run : started_paper_case_runs(s)) {
+    const Run& r = *run;
     Col col;
     col.ref = r.ref;
     col.meta = r.meta;
@@ -706,13 +718,9 @@ std::string run_gnuplot(const fs::path& gp, const fs::path& png) {
   return fmt::format("`gnuplot {}` failed (exit {}); see `{}.err`", gp.string(), rc, gp.string());
 }
 
-// Fig. 4, 5 and 6 analogs for the runs of section (a), next to the document in FIG_DIR (its previous content
-// is replaced): a bar chart of every run's full-scale resistance with its CI against the paper's numbers and
-// our R_CH (Fig. 6), and each run's own force history (Fig. 5) and ice views from above and below (Fig. 4,
-// first run of each engine), copied from the run directories that brash-post wrote them to. The paper case's
-// resistance histories in one plot (full scale, 0.5 s bin means of -fx; runs still going too, up to where
-// their record is): the shape of each fluid model's history beside the paper's two levels, which is what
-// tells a plateau from a rise.
+// The paper case's resistance histories in one plot (full scale, 0.5 s bin means of -fx; runs still going
+// too, up to where their record is): the shape of each fluid model's history beside the paper's two levels,
+// which is what tells a plateau from a rise.
 void section_paper_histories(Study& s, std::string& md, const fs::path& fig_dir,
                              const std::function<std::string(const std::string&)>& link) {
   constexpr double kBin_s = 0.5;
@@ -721,14 +729,10 @@ void section_paper_histories(Study& s, std::string& md, const fs::path& fig_dir,
     std::vector<std::pair<double, double>> t_kN;  // bin centre, bin mean (NAN: no row in the bin)
   };
   std::vector<Line> lines;
-  std::set<fs::path> seen;
   std::array<double, 2> window{NAN, NAN};
-  for (const auto& row : s.rows) {
-    const Run& r = s.run_of(row);
-    if (row.group != "paper" || row.base_case != "jbc_ia_5kn" || r.run_dir.empty() ||
-        !seen.insert(r.run_dir).second || !fs::exists(r.run_dir / "hull_force.csv") ||
-        !fs::exists(r.run_dir / "case.yaml"))
-      continue;
+  for (const Run* run : started_paper_case_runs(s)) {
+    const Run& r = *run;
+    if (!fs::exists(r.run_dir / "hull_force.csv")) continue;
     try {
       const brash::Case c = brash::load_case(r.run_dir / "case.yaml");
       const auto h = brash::post::read_force_history(r.run_dir / "hull_force.csv", !r.ok);
@@ -803,6 +807,11 @@ void section_paper_histories(Study& s, std::string& md, const fs::path& fig_dir,
     md += "Paper-case history plot not produced: " + err + ".\n\n";
 }
 
+// Fig. 4, 5 and 6 analogs for the runs of section (a), next to the document in FIG_DIR (its previous content
+// is replaced): a bar chart of the runs' full-scale resistance with its CI against the paper's numbers and
+// our R_CH (Fig. 6; the paper case's runs alone once one is complete), the paper case's histories in one
+// plot, and each run's own force history (Fig. 5) and ice views from above and below (Fig. 4, first run of each
+// engine), copied from the run directories that brash-post wrote them to.
 void section_figures(Study& s, std::string& md, const fs::path& fig_dir, const fs::path& doc_dir) {
   md += "### Figures (analogs of the paper's Fig. 4, 5 and 6)\n\n";
   const auto runs = completed_runs(s, "paper");
