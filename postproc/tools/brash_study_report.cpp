@@ -810,8 +810,8 @@ void section_paper_histories(Study& s, std::string& md, const fs::path& fig_dir,
 // Fig. 4, 5 and 6 analogs for the runs of section (a), next to the document in FIG_DIR (its previous content
 // is replaced): a bar chart of the runs' full-scale resistance with its CI against the paper's numbers and
 // our R_CH (Fig. 6; the paper case's runs alone once one is complete), the paper case's histories in one
-// plot, and each run's own force history (Fig. 5) and ice views from above and below (Fig. 4, first run of each
-// engine), copied from the run directories that brash-post wrote them to.
+// plot, and each run's own force history (Fig. 5) and ice views from above and below (Fig. 4, first run of
+// each engine), copied from the run directories that brash-post wrote them to.
 void section_figures(Study& s, std::string& md, const fs::path& fig_dir, const fs::path& doc_dir) {
   md += "### Figures (analogs of the paper's Fig. 4, 5 and 6)\n\n";
   const auto runs = completed_runs(s, "paper");
