@@ -254,6 +254,10 @@ nlohmann::ordered_json report_json(const RunAnalysis& a) {
   j["wall_time_s"] = opt(a.meta.wall_time_s);
   j["particle_steps"] = opt(a.meta.particle_steps);
   j["exits"] = a.meta.exits;  // pieces that left through the channel's open ends (removed from the scene)
+  if (const auto& e = a.meta.early_stop)
+    j["early_stop"] = {{"t_s", e->t_s},
+                       {"requested_duration_s", e->requested_duration_s},
+                       {"rel_ci_threshold", e->rel_ci_threshold}};
   j["paper_full_kN"] = {{"added_mass", PaperValues::added_mass_full_kN}, {"drag", PaperValues::drag_full_kN}};
   if (a.band)
     j["contact_band"] = {{"band_below_m", a.band->band_below_m},
@@ -282,6 +286,10 @@ std::string report_markdown(const RunAnalysis& a) {
                     a.case_.speed_m_s, a.case_.scale_lambda);
   md += fmt::format("| averaging window | [{:.3f}, {:.3f}] s (requested [{}, {}] s){} |\n", w.used_s[0], w.used_s[1],
                     w.requested_s[0], w.requested_s[1], w.fallback ? " FALLBACK" : (w.truncated ? " TRUNCATED" : ""));
+  if (const auto& e = a.meta.early_stop)
+    md += fmt::format("| early stop | at t = {:.3f} s of the {} s asked for: the window mean's 95 % CI had fallen below "
+                      "{} % of it (speedups.early_stop_rel_ci); the window ends there |\n",
+                      e->t_s, e->requested_duration_s, 100 * e->rel_ci_threshold);
   md += fmt::format(
       "| wall time | {} |\n| particle steps | {} |\n| pieces gone through the channel's ends | {} |\n\n",
       a.meta.wall_time_s ? fmt::format("{:.1f} s", *a.meta.wall_time_s) : "n/a",

@@ -50,6 +50,13 @@ RunMeta read_run_meta(const std::filesystem::path& path) {
   take(j, "particles", m.particles, path);
   take(j, "exits", m.exits, path);
   if (j.contains("skips") && j["skips"].is_object()) take(j["skips"], "cull", m.culled_far_field, path);
+  if (j.contains("early_stop") && j["early_stop"].is_object()) {
+    EarlyStopMeta e;
+    take(j["early_stop"], "t_s", e.t_s, path);
+    take(j["early_stop"], "requested_duration_s", e.requested_duration_s, path);
+    take(j["early_stop"], "rel_ci_threshold", e.rel_ci_threshold, path);
+    m.early_stop = e;
+  }
   return m;
 }
 

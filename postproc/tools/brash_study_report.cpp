@@ -228,6 +228,11 @@ void load_report(Run& r) {
     r.warnings.push_back(fmt::format("not stationary: the window's second half {:+.1f} % on its first",
                                      100 * d / std::abs(a)));
   }
+  // not a problem, but the window ends early: said where the window is read (speedups.early_stop_rel_ci)
+  if (const auto t = opt<double>(j, P("/early_stop/t_s")))
+    r.warnings.push_back(fmt::format("stopped early at t = {:.2f} s of {:g} s (95 % CI below {:g} % of the mean)", *t,
+                                     opt<double>(j, P("/early_stop/requested_duration_s")).value_or(NAN),
+                                     100 * opt<double>(j, P("/early_stop/rel_ci_threshold")).value_or(NAN)));
 }
 
 // ---- numbers --------------------------------------------------------------------------------------

@@ -25,6 +25,7 @@ struct SyntheticRun {
   std::vector<double> snapshot_times_s{0.0, 20.0, 40.0};
   int particles = 60;
   int exits = 0;                      // meta.json "exits" (written when > 0)
+  std::string meta_extra_json;        // more meta.json keys, e.g. R"(, "early_stop": {...})"
   std::string hull_extra_yaml;        // more hull: keys, e.g. "  band_m: [0.15, 0.1]\n"
   double deep_piece_z_m = 0;          // nonzero: piece 0's centre z in the second snapshot
   // Written values (read back by the tests).
@@ -78,7 +79,8 @@ inline void write_synthetic_run(const std::filesystem::path& dir, SyntheticRun& 
              fmt::format(R"({{"engine": "synthetic", "engine_version": "1.0", "fluid_model": "added_mass",
  "treatment": "implicit", "dt_s": 5e-5, "ranks": 2, "particles": {}, "wall_time_s": 123.5,
  "particle_steps": 4.2e9, "git_commit": "abc", "status": "{}", "reason": ""{}}})",
-                         r.particles, r.status, r.exits > 0 ? fmt::format(", \"exits\": {}", r.exits) : ""));
+                         r.particles, r.status,
+                         (r.exits > 0 ? fmt::format(", \"exits\": {}", r.exits) : "") + r.meta_extra_json));
 
   std::mt19937_64 rng(42);
   std::normal_distribution<double> e(0, 1);

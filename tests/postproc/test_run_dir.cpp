@@ -137,6 +137,31 @@ TEST(RunDir, PiecesGoneThroughTheChannelEndsAreReported) {
   fs::remove_all(dir);
 }
 
+// A run the LIGGGHTS runner stopped early (speedups.early_stop_rel_ci): its report says where and why, so a reader of
+// a window ending at 25 s of a 40 s case knows it was not cut short by a failure.
+TEST(RunDir, EarlyStoppedRunSaysWhereAndWhy) {
+  const auto dir = scratch("early_stopped");
+  SyntheticRun r;
+  r.meta_extra_json = R"(, "early_stop": {"t_s": 25.0, "requested_duration_s": 40.0, "rel_ci_threshold": 0.01,
+ "mean_N": 2.0, "ci95_N": 0.01})";
+  write_synthetic_run(dir, r);
+  const auto j = run_cli(dir);
+  ASSERT_TRUE(j.contains("early_stop")) << j.dump(1);
+  EXPECT_DOUBLE_EQ(j["early_stop"]["t_s"].get<double>(), 25.0);
+  EXPECT_DOUBLE_EQ(j["early_stop"]["requested_duration_s"].get<double>(), 40.0);
+  EXPECT_DOUBLE_EQ(j["early_stop"]["rel_ci_threshold"].get<double>(), 0.01);
+  const std::string text = brash::post::read_text_file(dir / "report.md");
+  EXPECT_NE(text.find("| early stop | at t = 25.000 s of the 40 s asked for"), std::string::npos) << text;
+  EXPECT_NE(text.find("below 1 % of it"), std::string::npos) << text;
+  // a run without the key has neither
+  SyntheticRun plain;
+  write_synthetic_run(dir, plain);
+  const auto j2 = run_cli(dir);
+  EXPECT_FALSE(j2.contains("early_stop"));
+  EXPECT_EQ(brash::post::read_text_file(dir / "report.md").find("early stop"), std::string::npos);
+  fs::remove_all(dir);
+}
+
 TEST(RunDir, GapInTheRecordIsNamedAndTheReportIsNotComplete) {
   // The paper run's lesson: a resumed run's retry overwrote an attempt's rows, and the window mean silently
   // covered 14 of its 25 s. A missing stretch inside the window is named in the notes, report.json lists it

@@ -434,7 +434,8 @@ TEST(StudyReport, PaperSetUpTableComesFromEachRunsCaseAndMeta) {
 
 // A run whose report.json says the window's record drifts (brash-post's window_halves) carries that in its
 // status, with the size of the drift; a stationary one does not.
-TEST(StudyReport, DriftingRecordIsFlaggedInItsStatus) {
+// The status column names a drifting record, a gap in the record and an early stop (the window ends at the stop).
+TEST(StudyReport, StatusNamesDriftGapsAndEarlyStop) {
   const fs::path d = fresh_dir("drift");
   write_report(d / "runs/a", "liggghts", "added_mass", 0.482, 11.6, 0.4);
   write_report(d / "runs/b", "liggghts", "drag", 0.482, 11.0, 0.4);
@@ -449,6 +450,7 @@ TEST(StudyReport, DriftingRecordIsFlaggedInItsStatus) {
                                                {"difference", 0.1},
                                                {"difference_ci95", 0.38},
                                                {"drifts", false}};
+  jb["early_stop"] = {{"t_s", 25.0}, {"requested_duration_s", 40.0}, {"rel_ci_threshold", 0.01}};
   std::ofstream(d / "runs/a/report.json") << ja.dump(2);
   std::ofstream(d / "runs/b/report.json") << jb.dump(2);
   std::string m = kHeader;
@@ -465,6 +467,19 @@ TEST(StudyReport, DriftingRecordIsFlaggedInItsStatus) {
   EXPECT_NE(md.find("not stationary: the window's second half +8.9 % on its first"), std::string::npos) << md;
   EXPECT_EQ(md.find("+0.9 % on its first"), std::string::npos) << md;  // b: within its CI, not flagged
   EXPECT_EQ(md.find("RECORD HAS GAPS"), std::string::npos) << md;
+  EXPECT_NE(md.find("stopped early at t = 25.00 s of 40 s (95 % CI below 1 % of the mean)"), std::string::npos)
+      << md;
+  {  // b's rows only (a ran to its end)
+    std::istringstream lines(md);
+    int rows = 0;
+    for (std::string line; std::getline(lines, line);)
+      if (line.find("stopped early") != std::string::npos) {
+        ++rows;
+        EXPECT_EQ(line.find("11.60"), std::string::npos) << line;
+        EXPECT_EQ(line.find("runs/a"), std::string::npos) << line;
+      }
+    EXPECT_GE(rows, 1);
+  }
 
   // a force record with a stretch missing in the window (report.json record.gaps_in_window_s, complete false)
   ja["complete"] = false;

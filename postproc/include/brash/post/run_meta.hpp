@@ -6,6 +6,13 @@
 
 namespace brash::post {
 
+// meta.json "early_stop" (LIGGGHTS runner, speedups.early_stop_rel_ci): where the run stopped and why.
+struct EarlyStopMeta {
+  double t_s = 0;                   // model time of the stop; the run's window and duration end here
+  double requested_duration_s = 0;  // the case's run.duration_s
+  double rel_ci_threshold = 0;      // the 95 % CI of the window mean fell below this fraction of it
+};
+
 struct RunMeta {
   std::string engine = "unknown", engine_version, fluid_model, treatment, git_commit;
   std::string status = "unknown";  // running | complete | failed
@@ -14,6 +21,7 @@ struct RunMeta {
   std::optional<long long> ranks, particles;
   long long exits = 0;  // pieces that left through the channel's open ends (fix brash/exit, World::retire)
   bool culled_far_field = false;  // brash-ode --cull (skips.cull): spheres outside the window frozen, no wake rule
+  std::optional<EarlyStopMeta> early_stop;
   bool in_progress() const { return status == "running"; }
 };
 
