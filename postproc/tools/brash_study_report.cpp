@@ -7,8 +7,10 @@
 // required: group, run_dir, command; the others may be empty. One run may appear in several rows
 // (e.g. the baseline run is the reference of every sensitivity group). run_dir is relative to the
 // manifest's folder unless absolute.
-// Groups: `paper` (table a), `speed` (table b, value = speed), `engine` (table d), anything else is a
-// sensitivity group (table c) whose rows with baseline = 1 are the reference.
+// Groups: `paper` (table a), `speed` (table b, value = speed), `engine` (table d), `paired` (a paired-seed
+// ensemble: run_dir is the summary JSON of bench/rank_ensemble.sh, param / value the change of its side B on its
+// side A; table c and the gap's candidates), anything else is a sensitivity group (table c) whose rows with
+// baseline = 1 are the reference.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -295,8 +297,58 @@ std::string status_cell(const Run& r) {
   return s.empty() ? "ok" : s;
 }
 
+// A paired-seed ensemble's summary (bench/rank_ensemble.sh: OUT/ensemble-<A>-vs-<B>.json): every packing seed run
+// as side A and as side B, the mean of the paired differences (B - A) / mean of the pair with its 95 % CI.
+struct Paired {
+  std::string ref;  // P1, P2, ...
+  const Row* row = nullptr;
+  bool ok = false;
+  std::string problem;
+  std::string side_a, side_b, case_name;
+  int pairs = 0;
+  double mean_a_N = NAN, mean_b_N = NAN, diff_rel = NAN, ci95_rel = NAN;
+  bool resolved() const { return std::abs(diff_rel) > ci95_rel; }
+};
+
+Paired load_paired(const Row& row, int index) {
+  Paired p;
+  p.ref = fmt::format("P{}", index);
+  p.row = &row;
+  std::ifstream in(row.run_dir);
+  if (row.run_dir.empty() || !in) {
+    p.problem = fmt::format("no ensemble summary at {}", row.run_dir.string());
+    return p;
+  }
+  try {
+    const json j = json::parse(in);
+    p.side_a = j.at("side_a").get<std::string>();
+    p.side_b = j.at("side_b").get<std::string>();
+    p.case_name = j.value("case", std::string("?"));
+    p.pairs = j.at("pairs").get<int>();
+    p.mean_a_N = j.at("mean_a_N").get<double>();
+    p.mean_b_N = j.at("mean_b_N").get<double>();
+    p.diff_rel = j.at("diff_rel").get<double>();
+    p.ci95_rel = j.at("ci95_rel").get<double>();
+    p.ok = p.pairs >= 2 && std::isfinite(p.diff_rel) && std::isfinite(p.ci95_rel);
+    if (!p.ok) p.problem = fmt::format("{}: fewer than 2 pairs or no finite difference", row.run_dir.string());
+  } catch (const json::exception& e) {
+    p.problem = fmt::format("{}: {}", row.run_dir.string(), e.what());
+  }
+  return p;
+}
+
+// The fluid model a side runs ("fluid.model=X" among its edits), else the case's own.
+std::string side_model(const std::string& side) {
+  const auto at = side.find("fluid.model=");
+  if (at == std::string::npos) return "case default";
+  const auto from = at + std::string("fluid.model=").size();
+  return side.substr(from, side.find(',', from) - from);
+}
+
 struct Study {
   std::vector<Row> rows;
+  std::vector<Row> paired_rows;  // group `paired`, kept apart from the run rows
+  std::vector<Paired> paired;
   std::map<fs::path, Run> runs;  // by run dir (empty path: one per failed row, keyed by a fake path)
   std::vector<fs::path> order;
   Run& run_of(const Row& r) { return runs.at(key_of(r)); }
@@ -368,6 +420,14 @@ void section_failures(const Study& s, std::string& md) {
     md += "\n";
   }
   md += "## Runs that failed or are missing\n\n";
+  std::vector<const Paired*> missing;
+  for (const Paired& p : s.paired)
+    if (!p.ok) missing.push_back(&p);
+  if (!missing.empty()) {
+    md += fmt::format("**{} paired ensemble(s) have no usable summary** (kept in section (c)):\n\n", missing.size());
+    for (const Paired* p : missing) md += fmt::format("- {}: {}\n", p->ref, md_escape(p->problem));
+    md += "\n";
+  }
   if (bad.empty()) {
     md += running.empty() ? "None: every run listed in the manifest has a complete report.json.\n\n"
                           : "None: every other run listed in the manifest has a complete report.json.\n\n";
@@ -681,7 +741,8 @@ void section_gap(Study& s, std::string& md) {
       "### The gap to the paper, and the candidates the study measured\n\n" + gaps +
       "\nEach candidate below is a change of one input, measured on a reduced case (or on the paper case itself, "
       "group paper_candidates) against its baseline "
-      "(section (c); one run per value, so a change inside its CI is not resolved; jbc_bench's window is the "
+      "(section (c); one run per value, so a change inside its CI is not resolved; rows P1, P2, ... are paired-seed "
+      "ensembles, which resolve a few per cent; jbc_bench's window is the "
       "bow's first second in the ice, too short for the fluid models' difference to build up, jbc_quick's is "
       "2-4 s). A candidate can close the gap only if its change has the gap's sign and a similar size; the "
       "set-up table above says which inputs the paper does not state.\n\n"
@@ -703,6 +764,13 @@ void section_gap(Study& s, std::string& md) {
                         100.0 * rel, 100.0 * ci, std::abs(rel) < ci ? " (not resolved)" : "", r.ref, b->ref);
       any = true;
     }
+  }
+  for (const Paired& p : s.paired) {
+    if (!p.ok) continue;
+    md += fmt::format("| {}: {} | {}, {} paired packings, {} | {:+.1f} % ± {:.1f} %{} | {} |\n", p.row->param,
+                      md_escape(p.row->value), p.case_name, p.pairs, side_model(p.side_b), 100.0 * p.diff_rel,
+                      100.0 * p.ci95_rel, p.resolved() ? "" : " (not resolved)", p.ref);
+    any = true;
   }
   if (!any) md += "| — | — | no completed sensitivity run with a baseline | — |\n";
   md += "\n";
@@ -1048,6 +1116,33 @@ void section_sensitivity(Study& s, std::string& md) {
   }
 }
 
+// The paired-seed ensembles: one run per value cannot resolve a change smaller than the run-to-run scatter of a
+// chaotic contact scene (~10-20 % CI on the reduced cases); the same packings run both ways can.
+void section_paired(const Study& s, std::string& md) {
+  if (s.paired.empty()) return;
+  md += "### Paired-seed ensembles\n\n"
+        "Each packing seed of the case runs as side A and as side B (the change); the change is the mean over the "
+        "pairs of (B − A) / mean of the pair, with its 95 % CI (Student t), so the packings' own scatter cancels "
+        "(`bench/rank_ensemble.sh`). Resolved: the CI excludes 0.\n\n"
+        "| ensemble | change (parameter: value) | case | side A → side B | pairs | mean A / B [N] | "
+        "(B − A) / mean ± CI95 | resolved |\n|---|---|---|---|---|---|---|---|\n";
+  for (const Paired& p : s.paired) {
+    if (!p.ok) {
+      md += fmt::format("| {} | {}: {} | {} | — | — | — | — | **MISSING: {}** |\n", p.ref, p.row->param,
+                        md_escape(p.row->value), p.row->base_case, md_escape(p.problem));
+      continue;
+    }
+    md += fmt::format("| {} | {}: {} | {} | `{}` → `{}` | {} | {:.2f} / {:.2f} | {:+.2f} % ± {:.2f} % | {} |\n", p.ref,
+                      p.row->param, md_escape(p.row->value), p.case_name, md_escape(p.side_a), md_escape(p.side_b),
+                      p.pairs, p.mean_a_N, p.mean_b_N, 100.0 * p.diff_rel, 100.0 * p.ci95_rel,
+                      p.resolved() ? "yes" : "no");
+  }
+  md += "\nCommands (each re-prints its table from the runs it finds and runs the missing ones):\n\n";
+  for (const Paired& p : s.paired)
+    md += fmt::format("- {} (`{}`): `{}`\n", p.ref, show_path(p.row->run_dir), md_escape(p.row->command));
+  md += "\n";
+}
+
 void section_engines(Study& s, std::string& md) {
   md += "## (d) Engines\n\n";
   std::vector<const Run*> runs;
@@ -1113,7 +1208,9 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     Study s;
-    s.rows = read_manifest(manifest);
+    for (auto& row : read_manifest(manifest)) (row.group == "paired" ? s.paired_rows : s.rows).push_back(row);
+    for (const auto& row : s.paired_rows)
+      s.paired.push_back(load_paired(row, static_cast<int>(s.paired.size()) + 1));
     build(s);
     fs::path out_p = out;
     if (out_p.has_parent_path()) fs::create_directories(out_p.parent_path());
@@ -1139,6 +1236,7 @@ int main(int argc, char** argv) {
                       out_p.parent_path());
     section_speed(s, md, plot_p, summary);
     section_sensitivity(s, md);
+    section_paired(s, md);
     section_engines(s, md);
     section_runs(s, md);
     {
@@ -1157,6 +1255,12 @@ int main(int argc, char** argv) {
       running += r.in_progress ? 1 : 0;
       summary["runs"].push_back({{"ref", r.ref}, {"run_dir", r.run_dir.string()}, {"ok", r.ok},
                                  {"in_progress", r.in_progress}, {"problem", r.problem}});
+    }
+    summary["paired"] = json::array();
+    for (const Paired& p : s.paired) {
+      failed += p.ok ? 0 : 1;
+      summary["paired"].push_back({{"ref", p.ref}, {"summary", p.row->run_dir.string()}, {"ok", p.ok},
+                                   {"problem", p.problem}});
     }
     summary["failed"] = failed;
     summary["in_progress"] = running;

@@ -240,6 +240,66 @@ TEST(StudyReport, GapToThePaperListsEveryMeasuredCandidate) {
   EXPECT_EQ(read(d / "study2.md").find("### The gap to the paper"), std::string::npos);
 }
 
+// Paired-seed ensembles (group `paired`, run_dir = bench/rank_ensemble.sh's summary JSON): tabled in section (c)
+// with their commands, listed among the gap's candidates (resolved or not), and a missing summary is named in the
+// failures section and counted as failed, never dropped.
+TEST(StudyReport, PairedEnsemblesAreTabledAndAMissingOneIsNamed) {
+  const fs::path d = fresh_dir("paired");
+  write_report(d / "runs/paper", "liggghts", "drag", 0.482, 23.76, 0.07);
+  const std::string soft = "1:contact.youngs_modulus_pa=3.125e5";
+  auto write_summary = [&](const std::string& name, const std::string& side_b, int pairs, double a, double b,
+                           double diff, double ci) {
+    fs::create_directories(d / "ens");
+    json j = {{"case", "jbc_quick"}, {"side_a", soft + ",fluid.model=drag"}, {"side_b", side_b}, {"pairs", pairs},
+              {"mean_a_N", a},       {"mean_b_N", b},                      {"diff_rel", diff}, {"ci95_rel", ci}};
+    std::ofstream(d / "ens" / name) << j.dump(1);
+  };
+  write_summary("both.json", soft + ",fluid.model=both", 8, 38.96, 40.47, 0.0380, 0.0070);
+  write_summary("rho.json", soft + ",fluid.model=drag,ice.density_kg_m3=850", 3, 38.9, 38.7, -0.0050, 0.0090);
+  std::string m = kHeader;
+  m += "p\tpaper\tpaper case\t\t\t1\tjbc_ia_5kn\t0\truns/paper\tbrash-liggghts-run paper\n";
+  m += "e1\tpaired\tboth on drag\tfluid.model\tboth\t0\tjbc_quick\t0\tens/both.json\tSIDE_B=both bash "
+       "bench/rank_ensemble.sh 8 ens\n";
+  m += "e2\tpaired\trho\tice.density_kg_m3\t850\t0\tjbc_quick\t0\tens/rho.json\tSIDE_B=rho bash "
+       "bench/rank_ensemble.sh 3 ens\n";
+  m += "e3\tpaired\tmu\tfriction.ice_ice\t0.5\t0\tjbc_quick\t0\tens/mu.json\tSIDE_B=mu bash "
+       "bench/rank_ensemble.sh 3 ens\n";
+  std::ofstream(d / "manifest.tsv") << m;
+  ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --plot none --figures none --summary-json '{}'",
+                                    (d / "manifest.tsv").string(), (d / "study.md").string(),
+                                    (d / "summary.json").string())),
+            0)
+      << read(d / "tool.log");
+  const std::string md = read(d / "study.md");
+  EXPECT_NE(md.find("| P1 | fluid.model: both | jbc_quick | `" + soft + ",fluid.model=drag` → `" + soft +
+                    ",fluid.model=both` | 8 | 38.96 / 40.47 | +3.80 % ± 0.70 % | yes |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| -0.50 % ± 0.90 % | no |"), std::string::npos) << md;
+  EXPECT_NE(md.find("- P1 (`"), std::string::npos) << md;
+  EXPECT_NE(md.find("`SIDE_B=both bash bench/rank_ensemble.sh 8 ens`"), std::string::npos) << md;
+  // the gap's candidates, beside the one-run rows
+  EXPECT_NE(md.find("| fluid.model: both | jbc_quick, 8 paired packings, both | +3.8 % ± 0.7 % | P1 |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| ice.density_kg_m3: 850 | jbc_quick, 3 paired packings, drag | -0.5 % ± 0.9 % (not resolved) "
+                    "| P2 |"),
+            std::string::npos)
+      << md;
+  // the missing one: in its table row, in the failures section, counted as failed
+  EXPECT_NE(md.find("| P3 | friction.ice_ice: 0.5 | jbc_quick | — | — | — | — | **MISSING: no ensemble summary at"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("**1 paired ensemble(s) have no usable summary**"), std::string::npos) << md;
+  const json summary = json::parse(read(d / "summary.json"));
+  EXPECT_EQ(summary.at("failed").get<int>(), 1);
+  ASSERT_EQ(summary.at("paired").size(), 3u);
+  EXPECT_FALSE(summary.at("paired").at(2).at("ok").get<bool>());
+  // a paired row is not a run: it is not in the runs table, and R-numbers are the runs' alone
+  EXPECT_EQ(md.find("`ens/both.json` | "), std::string::npos) << md;
+  fs::remove_all(d);
+}
+
 // Section (a)'s figures: the Fig. 6 analog bar chart (data with our runs, the paper's numbers and our R_CH) and
 // each run's own force history / newest ice views copied next to the document; the folder is replaced each time.
 TEST(StudyReport, FiguresOfThePaperSectionAreCopiedAndPlotted) {
