@@ -337,7 +337,8 @@ Paired load_paired(const Row& row, int index) {
   return p;
 }
 
-// The fluid model a side runs ("fluid.model=X" among its edits), else the case's own.
+// The fluid model a side runs ("fluid.model=X" among its edits), else the case's own (the label when the manifest
+// row has none).
 std::string side_model(const std::string& side) {
   const auto at = side.find("fluid.model=");
   if (at == std::string::npos) return "case default";
@@ -768,7 +769,8 @@ void section_gap(Study& s, std::string& md) {
   for (const Paired& p : s.paired) {
     if (!p.ok) continue;
     md += fmt::format("| {}: {} | {}, {} paired packings, {} | {:+.1f} % ± {:.1f} %{} | {} |\n", p.row->param,
-                      md_escape(p.row->value), p.case_name, p.pairs, side_model(p.side_b), 100.0 * p.diff_rel,
+                      md_escape(p.row->value), p.case_name, p.pairs,
+                      md_escape(p.row->label.empty() ? side_model(p.side_b) : p.row->label), 100.0 * p.diff_rel,
                       100.0 * p.ci95_rel, p.resolved() ? "" : " (not resolved)", p.ref);
     any = true;
   }
@@ -1124,16 +1126,17 @@ void section_paired(const Study& s, std::string& md) {
         "Each packing seed of the case runs as side A and as side B (the change); the change is the mean over the "
         "pairs of (B − A) / mean of the pair, with its 95 % CI (Student t), so the packings' own scatter cancels "
         "(`bench/rank_ensemble.sh`). Resolved: the CI excludes 0.\n\n"
-        "| ensemble | change (parameter: value) | case | side A → side B | pairs | mean A / B [N] | "
-        "(B − A) / mean ± CI95 | resolved |\n|---|---|---|---|---|---|---|---|\n";
+        "| ensemble | change (parameter: value) | what | case | side A → side B | pairs | mean A / B [N] | "
+        "(B − A) / mean ± CI95 | resolved |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const Paired& p : s.paired) {
     if (!p.ok) {
-      md += fmt::format("| {} | {}: {} | {} | — | — | — | — | **MISSING: {}** |\n", p.ref, p.row->param,
-                        md_escape(p.row->value), p.row->base_case, md_escape(p.problem));
+      md += fmt::format("| {} | {}: {} | {} | {} | — | — | — | — | **MISSING: {}** |\n", p.ref, p.row->param,
+                        md_escape(p.row->value), md_escape(p.row->label), p.row->base_case, md_escape(p.problem));
       continue;
     }
-    md += fmt::format("| {} | {}: {} | {} | `{}` → `{}` | {} | {:.2f} / {:.2f} | {:+.2f} % ± {:.2f} % | {} |\n", p.ref,
-                      p.row->param, md_escape(p.row->value), p.case_name, md_escape(p.side_a), md_escape(p.side_b),
+    md += fmt::format("| {} | {}: {} | {} | {} | `{}` → `{}` | {} | {:.2f} / {:.2f} | {:+.2f} % ± {:.2f} % | {} |\n",
+                      p.ref, p.row->param, md_escape(p.row->value), md_escape(p.row->label), p.case_name,
+                      md_escape(p.side_a), md_escape(p.side_b),
                       p.pairs, p.mean_a_N, p.mean_b_N, 100.0 * p.diff_rel, 100.0 * p.ci95_rel,
                       p.resolved() ? "yes" : "no");
   }

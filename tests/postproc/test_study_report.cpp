@@ -260,7 +260,7 @@ TEST(StudyReport, PairedEnsemblesAreTabledAndAMissingOneIsNamed) {
   m += "p\tpaper\tpaper case\t\t\t1\tjbc_ia_5kn\t0\truns/paper\tbrash-liggghts-run paper\n";
   m += "e1\tpaired\tboth on drag\tfluid.model\tboth\t0\tjbc_quick\t0\tens/both.json\tSIDE_B=both bash "
        "bench/rank_ensemble.sh 8 ens\n";
-  m += "e2\tpaired\trho\tice.density_kg_m3\t850\t0\tjbc_quick\t0\tens/rho.json\tSIDE_B=rho bash "
+  m += "e2\tpaired\t\tice.density_kg_m3\t850\t0\tjbc_quick\t0\tens/rho.json\tSIDE_B=rho bash "
        "bench/rank_ensemble.sh 3 ens\n";
   m += "e3\tpaired\tmu\tfriction.ice_ice\t0.5\t0\tjbc_quick\t0\tens/mu.json\tSIDE_B=mu bash "
        "bench/rank_ensemble.sh 3 ens\n";
@@ -271,7 +271,7 @@ TEST(StudyReport, PairedEnsemblesAreTabledAndAMissingOneIsNamed) {
             0)
       << read(d / "tool.log");
   const std::string md = read(d / "study.md");
-  EXPECT_NE(md.find("| P1 | fluid.model: both | jbc_quick | `" + soft + ",fluid.model=drag` → `" + soft +
+  EXPECT_NE(md.find("| P1 | fluid.model: both | both on drag | jbc_quick | `" + soft + ",fluid.model=drag` → `" + soft +
                     ",fluid.model=both` | 8 | 38.96 / 40.47 | +3.80 % ± 0.70 % | yes |"),
             std::string::npos)
       << md;
@@ -279,7 +279,7 @@ TEST(StudyReport, PairedEnsemblesAreTabledAndAMissingOneIsNamed) {
   EXPECT_NE(md.find("- P1 (`"), std::string::npos) << md;
   EXPECT_NE(md.find("`SIDE_B=both bash bench/rank_ensemble.sh 8 ens`"), std::string::npos) << md;
   // the gap's candidates, beside the one-run rows
-  EXPECT_NE(md.find("| fluid.model: both | jbc_quick, 8 paired packings, both | +3.8 % ± 0.7 % | P1 |"),
+  EXPECT_NE(md.find("| fluid.model: both | jbc_quick, 8 paired packings, both on drag | +3.8 % ± 0.7 % | P1 |"),
             std::string::npos)
       << md;
   EXPECT_NE(md.find("| ice.density_kg_m3: 850 | jbc_quick, 3 paired packings, drag | -0.5 % ± 0.9 % (not resolved) "
@@ -287,7 +287,7 @@ TEST(StudyReport, PairedEnsemblesAreTabledAndAMissingOneIsNamed) {
             std::string::npos)
       << md;
   // the missing one: in its table row, in the failures section, counted as failed
-  EXPECT_NE(md.find("| P3 | friction.ice_ice: 0.5 | jbc_quick | — | — | — | — | **MISSING: no ensemble summary at"),
+  EXPECT_NE(md.find("| P3 | friction.ice_ice: 0.5 | mu | jbc_quick | — | — | — | — | **MISSING: no ensemble summary at"),
             std::string::npos)
       << md;
   EXPECT_NE(md.find("**1 paired ensemble(s) have no usable summary**"), std::string::npos) << md;
