@@ -287,9 +287,10 @@ std::string report_markdown(const RunAnalysis& a) {
   md += fmt::format("| averaging window | [{:.3f}, {:.3f}] s (requested [{}, {}] s){} |\n", w.used_s[0], w.used_s[1],
                     w.requested_s[0], w.requested_s[1], w.fallback ? " FALLBACK" : (w.truncated ? " TRUNCATED" : ""));
   if (const auto& e = a.meta.early_stop)
-    md += fmt::format("| early stop | at t = {:.3f} s of the {} s asked for: the window mean's 95 % CI had fallen below "
-                      "{} % of it (speedups.early_stop_rel_ci); the window ends there |\n",
-                      e->t_s, e->requested_duration_s, 100 * e->rel_ci_threshold);
+    md += fmt::format(
+        "| early stop | at t = {:.3f} s of the {} s asked for: the window mean's 95 % CI had fallen below "
+        "{} % of it (speedups.early_stop_rel_ci); the window ends there |\n",
+        e->t_s, e->requested_duration_s, 100 * e->rel_ci_threshold);
   md += fmt::format(
       "| wall time | {} |\n| particle steps | {} |\n| pieces gone through the channel's ends | {} |\n\n",
       a.meta.wall_time_s ? fmt::format("{:.1f} s", *a.meta.wall_time_s) : "n/a",

@@ -8,9 +8,9 @@
 // (e.g. the baseline run is the reference of every sensitivity group). run_dir is relative to the
 // manifest's folder unless absolute.
 // Groups: `paper` (table a), `speed` (table b, value = speed), `engine` (table d), `paired` (a paired-seed
-// ensemble: run_dir is the summary JSON of bench/rank_ensemble.sh, param / value the change of its side B on its
-// side A; table c and the gap's candidates), anything else is a sensitivity group (table c) whose rows with
-// baseline = 1 are the reference.
+// ensemble: run_dir is the summary JSON of bench/rank_ensemble.sh, param / value the change of its side B on
+// its side A; table c and the gap's candidates), anything else is a sensitivity group (table c) whose rows
+// with baseline = 1 are the reference.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -232,9 +232,10 @@ void load_report(Run& r) {
   }
   // not a problem, but the window ends early: said where the window is read (speedups.early_stop_rel_ci)
   if (const auto t = opt<double>(j, P("/early_stop/t_s")))
-    r.warnings.push_back(fmt::format("stopped early at t = {:.2f} s of {:g} s (95 % CI below {:g} % of the mean)", *t,
-                                     opt<double>(j, P("/early_stop/requested_duration_s")).value_or(NAN),
-                                     100 * opt<double>(j, P("/early_stop/rel_ci_threshold")).value_or(NAN)));
+    r.warnings.push_back(
+        fmt::format("stopped early at t = {:.2f} s of {:g} s (95 % CI below {:g} % of the mean)", *t,
+                    opt<double>(j, P("/early_stop/requested_duration_s")).value_or(NAN),
+                    100 * opt<double>(j, P("/early_stop/rel_ci_threshold")).value_or(NAN)));
 }
 
 // ---- numbers --------------------------------------------------------------------------------------
@@ -297,8 +298,9 @@ std::string status_cell(const Run& r) {
   return s.empty() ? "ok" : s;
 }
 
-// A paired-seed ensemble's summary (bench/rank_ensemble.sh: OUT/ensemble-<A>-vs-<B>.json): every packing seed run
-// as side A and as side B, the mean of the paired differences (B - A) / mean of the pair with its 95 % CI.
+// A paired-seed ensemble's summary (bench/rank_ensemble.sh: OUT/ensemble-<A>-vs-<B>.json): every packing seed
+// run as side A and as side B, the mean of the paired differences (B - A) / mean of the pair with its 95 %
+// CI.
 struct Paired {
   std::string ref;  // P1, P2, ...
   const Row* row = nullptr;
@@ -330,15 +332,16 @@ Paired load_paired(const Row& row, int index) {
     p.diff_rel = j.at("diff_rel").get<double>();
     p.ci95_rel = j.at("ci95_rel").get<double>();
     p.ok = p.pairs >= 2 && std::isfinite(p.diff_rel) && std::isfinite(p.ci95_rel);
-    if (!p.ok) p.problem = fmt::format("{}: fewer than 2 pairs or no finite difference", row.run_dir.string());
+    if (!p.ok)
+      p.problem = fmt::format("{}: fewer than 2 pairs or no finite difference", row.run_dir.string());
   } catch (const json::exception& e) {
     p.problem = fmt::format("{}: {}", row.run_dir.string(), e.what());
   }
   return p;
 }
 
-// The fluid model a side runs ("fluid.model=X" among its edits), else the case's own (the label when the manifest
-// row has none).
+// The fluid model a side runs ("fluid.model=X" among its edits), else the case's own (the label when the
+// manifest row has none).
 std::string side_model(const std::string& side) {
   const auto at = side.find("fluid.model=");
   if (at == std::string::npos) return "case default";
@@ -425,7 +428,8 @@ void section_failures(const Study& s, std::string& md) {
   for (const Paired& p : s.paired)
     if (!p.ok) missing.push_back(&p);
   if (!missing.empty()) {
-    md += fmt::format("**{} paired ensemble(s) have no usable summary** (kept in section (c)):\n\n", missing.size());
+    md += fmt::format("**{} paired ensemble(s) have no usable summary** (kept in section (c)):\n\n",
+                      missing.size());
     for (const Paired* p : missing) md += fmt::format("- {}: {}\n", p->ref, md_escape(p->problem));
     md += "\n";
   }
@@ -740,9 +744,11 @@ void section_gap(Study& s, std::string& md) {
   if (gaps.empty()) return;  // nothing to explain yet
   md +=
       "### The gap to the paper, and the candidates the study measured\n\n" + gaps +
-      "\nEach candidate below is a change of one input, measured on a reduced case (or on the paper case itself, "
+      "\nEach candidate below is a change of one input, measured on a reduced case (or on the paper case "
+      "itself, "
       "group paper_candidates) against its baseline "
-      "(section (c); one run per value, so a change inside its CI is not resolved; rows P1, P2, ... are paired-seed "
+      "(section (c); one run per value, so a change inside its CI is not resolved; rows P1, P2, ... are "
+      "paired-seed "
       "ensembles, which resolve a few per cent; jbc_bench's window is the "
       "bow's first second in the ice, too short for the fluid models' difference to build up, jbc_quick's is "
       "2-4 s). A candidate can close the gap only if its change has the gap's sign and a similar size; the "
@@ -770,8 +776,8 @@ void section_gap(Study& s, std::string& md) {
     if (!p.ok) continue;
     md += fmt::format("| {}: {} | {}, {} paired packings, {} | {:+.1f} % ± {:.1f} %{} | {} |\n", p.row->param,
                       md_escape(p.row->value), p.case_name, p.pairs,
-                      md_escape(p.row->label.empty() ? side_model(p.side_b) : p.row->label), 100.0 * p.diff_rel,
-                      100.0 * p.ci95_rel, p.resolved() ? "" : " (not resolved)", p.ref);
+                      md_escape(p.row->label.empty() ? side_model(p.side_b) : p.row->label),
+                      100.0 * p.diff_rel, 100.0 * p.ci95_rel, p.resolved() ? "" : " (not resolved)", p.ref);
     any = true;
   }
   if (!any) md += "| — | — | no completed sensitivity run with a baseline | — |\n";
@@ -1118,27 +1124,31 @@ void section_sensitivity(Study& s, std::string& md) {
   }
 }
 
-// The paired-seed ensembles: one run per value cannot resolve a change smaller than the run-to-run scatter of a
-// chaotic contact scene (~10-20 % CI on the reduced cases); the same packings run both ways can.
+// The paired-seed ensembles: one run per value cannot resolve a change smaller than the run-to-run scatter of
+// a chaotic contact scene (~10-20 % CI on the reduced cases); the same packings run both ways can.
 void section_paired(const Study& s, std::string& md) {
   if (s.paired.empty()) return;
-  md += "### Paired-seed ensembles\n\n"
-        "Each packing seed of the case runs as side A and as side B (the change); the change is the mean over the "
-        "pairs of (B − A) / mean of the pair, with its 95 % CI (Student t), so the packings' own scatter cancels "
-        "(`bench/rank_ensemble.sh`). Resolved: the CI excludes 0.\n\n"
-        "| ensemble | change (parameter: value) | what | case | side A → side B | pairs | mean A / B [N] | "
-        "(B − A) / mean ± CI95 | resolved |\n|---|---|---|---|---|---|---|---|---|\n";
+  md +=
+      "### Paired-seed ensembles\n\n"
+      "Each packing seed of the case runs as side A and as side B (the change); the change is the mean over "
+      "the "
+      "pairs of (B − A) / mean of the pair, with its 95 % CI (Student t), so the packings' own scatter "
+      "cancels "
+      "(`bench/rank_ensemble.sh`). Resolved: the CI excludes 0.\n\n"
+      "| ensemble | change (parameter: value) | what | case | side A → side B | pairs | mean A / B [N] | "
+      "(B − A) / mean ± CI95 | resolved |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const Paired& p : s.paired) {
     if (!p.ok) {
       md += fmt::format("| {} | {}: {} | {} | {} | — | — | — | — | **MISSING: {}** |\n", p.ref, p.row->param,
-                        md_escape(p.row->value), md_escape(p.row->label), p.row->base_case, md_escape(p.problem));
+                        md_escape(p.row->value), md_escape(p.row->label), p.row->base_case,
+                        md_escape(p.problem));
       continue;
     }
-    md += fmt::format("| {} | {}: {} | {} | {} | `{}` → `{}` | {} | {:.2f} / {:.2f} | {:+.2f} % ± {:.2f} % | {} |\n",
-                      p.ref, p.row->param, md_escape(p.row->value), md_escape(p.row->label), p.case_name,
-                      md_escape(p.side_a), md_escape(p.side_b),
-                      p.pairs, p.mean_a_N, p.mean_b_N, 100.0 * p.diff_rel, 100.0 * p.ci95_rel,
-                      p.resolved() ? "yes" : "no");
+    md += fmt::format(
+        "| {} | {}: {} | {} | {} | `{}` → `{}` | {} | {:.2f} / {:.2f} | {:+.2f} % ± {:.2f} % | {} |\n", p.ref,
+        p.row->param, md_escape(p.row->value), md_escape(p.row->label), p.case_name, md_escape(p.side_a),
+        md_escape(p.side_b), p.pairs, p.mean_a_N, p.mean_b_N, 100.0 * p.diff_rel, 100.0 * p.ci95_rel,
+        p.resolved() ? "yes" : "no");
   }
   md += "\nCommands (each re-prints its table from the runs it finds and runs the missing ones):\n\n";
   for (const Paired& p : s.paired)
@@ -1262,8 +1272,8 @@ int main(int argc, char** argv) {
     summary["paired"] = json::array();
     for (const Paired& p : s.paired) {
       failed += p.ok ? 0 : 1;
-      summary["paired"].push_back({{"ref", p.ref}, {"summary", p.row->run_dir.string()}, {"ok", p.ok},
-                                   {"problem", p.problem}});
+      summary["paired"].push_back(
+          {{"ref", p.ref}, {"summary", p.row->run_dir.string()}, {"ok", p.ok}, {"problem", p.problem}});
     }
     summary["failed"] = failed;
     summary["in_progress"] = running;

@@ -137,8 +137,8 @@ TEST(RunDir, PiecesGoneThroughTheChannelEndsAreReported) {
   fs::remove_all(dir);
 }
 
-// A run the LIGGGHTS runner stopped early (speedups.early_stop_rel_ci): its report says where and why, so a reader of
-// a window ending at 25 s of a 40 s case knows it was not cut short by a failure.
+// A run the LIGGGHTS runner stopped early (speedups.early_stop_rel_ci): its report says where and why, so a
+// reader of a window ending at 25 s of a 40 s case knows it was not cut short by a failure.
 TEST(RunDir, EarlyStoppedRunSaysWhereAndWhy) {
   const auto dir = scratch("early_stopped");
   SyntheticRun r;

@@ -240,9 +240,9 @@ TEST(StudyReport, GapToThePaperListsEveryMeasuredCandidate) {
   EXPECT_EQ(read(d / "study2.md").find("### The gap to the paper"), std::string::npos);
 }
 
-// Paired-seed ensembles (group `paired`, run_dir = bench/rank_ensemble.sh's summary JSON): tabled in section (c)
-// with their commands, listed among the gap's candidates (resolved or not), and a missing summary is named in the
-// failures section and counted as failed, never dropped.
+// Paired-seed ensembles (group `paired`, run_dir = bench/rank_ensemble.sh's summary JSON): tabled in section
+// (c) with their commands, listed among the gap's candidates (resolved or not), and a missing summary is
+// named in the failures section and counted as failed, never dropped.
 TEST(StudyReport, PairedEnsemblesAreTabledAndAMissingOneIsNamed) {
   const fs::path d = fresh_dir("paired");
   write_report(d / "runs/paper", "liggghts", "drag", 0.482, 23.76, 0.07);
@@ -250,8 +250,10 @@ TEST(StudyReport, PairedEnsemblesAreTabledAndAMissingOneIsNamed) {
   auto write_summary = [&](const std::string& name, const std::string& side_b, int pairs, double a, double b,
                            double diff, double ci) {
     fs::create_directories(d / "ens");
-    json j = {{"case", "jbc_quick"}, {"side_a", soft + ",fluid.model=drag"}, {"side_b", side_b}, {"pairs", pairs},
-              {"mean_a_N", a},       {"mean_b_N", b},                      {"diff_rel", diff}, {"ci95_rel", ci}};
+    json j = {{"case", "jbc_quick"}, {"side_a", soft + ",fluid.model=drag"},
+              {"side_b", side_b},    {"pairs", pairs},
+              {"mean_a_N", a},       {"mean_b_N", b},
+              {"diff_rel", diff},    {"ci95_rel", ci}};
     std::ofstream(d / "ens" / name) << j.dump(1);
   };
   write_summary("both.json", soft + ",fluid.model=both", 8, 38.96, 40.47, 0.0380, 0.0070);
@@ -271,23 +273,27 @@ TEST(StudyReport, PairedEnsemblesAreTabledAndAMissingOneIsNamed) {
             0)
       << read(d / "tool.log");
   const std::string md = read(d / "study.md");
-  EXPECT_NE(md.find("| P1 | fluid.model: both | both on drag | jbc_quick | `" + soft + ",fluid.model=drag` → `" + soft +
-                    ",fluid.model=both` | 8 | 38.96 / 40.47 | +3.80 % ± 0.70 % | yes |"),
-            std::string::npos)
+  EXPECT_NE(
+      md.find("| P1 | fluid.model: both | both on drag | jbc_quick | `" + soft + ",fluid.model=drag` → `" +
+              soft + ",fluid.model=both` | 8 | 38.96 / 40.47 | +3.80 % ± 0.70 % | yes |"),
+      std::string::npos)
       << md;
   EXPECT_NE(md.find("| -0.50 % ± 0.90 % | no |"), std::string::npos) << md;
   EXPECT_NE(md.find("- P1 (`"), std::string::npos) << md;
   EXPECT_NE(md.find("`SIDE_B=both bash bench/rank_ensemble.sh 8 ens`"), std::string::npos) << md;
   // the gap's candidates, beside the one-run rows
-  EXPECT_NE(md.find("| fluid.model: both | jbc_quick, 8 paired packings, both on drag | +3.8 % ± 0.7 % | P1 |"),
-            std::string::npos)
+  EXPECT_NE(
+      md.find("| fluid.model: both | jbc_quick, 8 paired packings, both on drag | +3.8 % ± 0.7 % | P1 |"),
+      std::string::npos)
       << md;
-  EXPECT_NE(md.find("| ice.density_kg_m3: 850 | jbc_quick, 3 paired packings, drag | -0.5 % ± 0.9 % (not resolved) "
-                    "| P2 |"),
-            std::string::npos)
+  EXPECT_NE(
+      md.find("| ice.density_kg_m3: 850 | jbc_quick, 3 paired packings, drag | -0.5 % ± 0.9 % (not resolved) "
+              "| P2 |"),
+      std::string::npos)
       << md;
   // the missing one: in its table row, in the failures section, counted as failed
-  EXPECT_NE(md.find("| P3 | friction.ice_ice: 0.5 | mu | jbc_quick | — | — | — | — | **MISSING: no ensemble summary at"),
+  EXPECT_NE(md.find("| P3 | friction.ice_ice: 0.5 | mu | jbc_quick | — | — | — | — | **MISSING: no ensemble "
+                    "summary at"),
             std::string::npos)
       << md;
   EXPECT_NE(md.find("**1 paired ensemble(s) have no usable summary**"), std::string::npos) << md;
@@ -494,7 +500,8 @@ TEST(StudyReport, PaperSetUpTableComesFromEachRunsCaseAndMeta) {
 
 // A run whose report.json says the window's record drifts (brash-post's window_halves) carries that in its
 // status, with the size of the drift; a stationary one does not.
-// The status column names a drifting record, a gap in the record and an early stop (the window ends at the stop).
+// The status column names a drifting record, a gap in the record and an early stop (the window ends at the
+// stop).
 TEST(StudyReport, StatusNamesDriftGapsAndEarlyStop) {
   const fs::path d = fresh_dir("drift");
   write_report(d / "runs/a", "liggghts", "added_mass", 0.482, 11.6, 0.4);
@@ -527,7 +534,8 @@ TEST(StudyReport, StatusNamesDriftGapsAndEarlyStop) {
   EXPECT_NE(md.find("not stationary: the window's second half +8.9 % on its first"), std::string::npos) << md;
   EXPECT_EQ(md.find("+0.9 % on its first"), std::string::npos) << md;  // b: within its CI, not flagged
   EXPECT_EQ(md.find("RECORD HAS GAPS"), std::string::npos) << md;
-  EXPECT_NE(md.find("stopped early at t = 25.00 s of 40 s (95 % CI below 1 % of the mean)"), std::string::npos)
+  EXPECT_NE(md.find("stopped early at t = 25.00 s of 40 s (95 % CI below 1 % of the mean)"),
+            std::string::npos)
       << md;
   {  // b's rows only (a ran to its end)
     std::istringstream lines(md);
