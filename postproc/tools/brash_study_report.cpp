@@ -299,8 +299,8 @@ std::string status_cell(const Run& r) {
 }
 
 // A paired-seed ensemble's summary (bench/rank_ensemble.sh: OUT/ensemble-<A>-vs-<B>.json): every packing seed
-// run as side A and as side B, the mean of the paired differences (B - A) / mean of the pair with its 95 %
-// CI.
+// run as side A and as side B, the mean of the paired differences (B - A) / mean of the pair with its
+// 95 % CI.
 struct Paired {
   std::string ref;  // P1, P2, ...
   const Row* row = nullptr;
@@ -745,14 +745,12 @@ void section_gap(Study& s, std::string& md) {
   md +=
       "### The gap to the paper, and the candidates the study measured\n\n" + gaps +
       "\nEach candidate below is a change of one input, measured on a reduced case (or on the paper case "
-      "itself, "
-      "group paper_candidates) against its baseline "
-      "(section (c); one run per value, so a change inside its CI is not resolved; rows P1, P2, ... are "
-      "paired-seed "
-      "ensembles, which resolve a few per cent; jbc_bench's window is the "
-      "bow's first second in the ice, too short for the fluid models' difference to build up, jbc_quick's is "
-      "2-4 s). A candidate can close the gap only if its change has the gap's sign and a similar size; the "
-      "set-up table above says which inputs the paper does not state.\n\n"
+      "itself, group paper_candidates) against its baseline (section (c); one run per value, so a change "
+      "inside its CI is not resolved; rows P1, P2, ... are paired-seed ensembles, which resolve a few per "
+      "cent; jbc_bench's window is the bow's first second in the ice, too short for the fluid models' "
+      "difference to build up, jbc_quick's is 2-4 s). A candidate can close the gap only if its change has "
+      "the gap's sign and a similar size; the set-up table above says which inputs the paper does not "
+      "state.\n\n"
       "| candidate (parameter: value) | case, engine, fluid model | change vs baseline ± CI95 | runs |\n"
       "|---|---|---|---|\n";
   bool any = false;
@@ -881,8 +879,7 @@ void section_paper_histories(Study& s, std::string& md, const fs::path& fig_dir,
     md += fmt::format(
         "![paper-case resistance histories]({})\n\nThe paper case's resistance histories (`{}`, data `{}`): "
         "full scale, 0.5 s means of the hull's x force, window shaded, the paper's two levels dashed (its "
-        "Fig. 5 "
-        "shows a plateau from ~15 s).\n\n",
+        "Fig. 5 shows a plateau from ~15 s).\n\n",
         link(png.filename().string()), link(png.filename().string()), link(dat.filename().string()));
   else
     md += "Paper-case history plot not produced: " + err + ".\n\n";
@@ -1131,10 +1128,8 @@ void section_paired(const Study& s, std::string& md) {
   md +=
       "### Paired-seed ensembles\n\n"
       "Each packing seed of the case runs as side A and as side B (the change); the change is the mean over "
-      "the "
-      "pairs of (B − A) / mean of the pair, with its 95 % CI (Student t), so the packings' own scatter "
-      "cancels "
-      "(`bench/rank_ensemble.sh`). Resolved: the CI excludes 0.\n\n"
+      "the pairs of (B − A) / mean of the pair, with its 95 % CI (Student t), so the packings' own scatter "
+      "cancels (`bench/rank_ensemble.sh`). Resolved: the CI excludes 0.\n\n"
       "| ensemble | change (parameter: value) | what | case | side A → side B | pairs | mean A / B [N] | "
       "(B − A) / mean ± CI95 | resolved |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const Paired& p : s.paired) {
