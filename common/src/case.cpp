@@ -46,6 +46,7 @@ constexpr EnumText<Treatment> kTreatment[] = {{Treatment::Implicit, "implicit"},
                                               {Treatment::Explicit, "explicit"}};
 constexpr EnumText<DragLaw> kDragLaw[] = {{DragLaw::Constant, "constant"},
                                           {DragLaw::SchillerNaumann, "schiller_naumann"}};
+constexpr EnumText<HullFlow> kHullFlow[] = {{HullFlow::None, "none"}, {HullFlow::ThinShip, "thin_ship"}};
 constexpr EnumText<CaTable> kCaTable[] = {{CaTable::Table1, "table1"},
                                           {CaTable::Text, "text"},
                                           {CaTable::Zero, "zero"},
@@ -355,12 +356,19 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
           [](double e) { return e > 0 && e <= 1; }, "in (0, 1]");
   }
   {  // fluid
-    const auto s = r.section(root, "fluid", {"model", "treatment", "drag_coefficient", "drag_law", "ca_table"});
+    const auto s = r.section(root, "fluid",
+                             {"model", "treatment", "drag_coefficient", "drag_law", "ca_table", "hull_flow"});
     r.enumeration(s, "fluid", "model", kFluidModel, c.fluid.model);
     r.enumeration(s, "fluid", "treatment", kTreatment, c.fluid.treatment);
     r.num(s, "fluid", "drag_coefficient", c.fluid.drag_coefficient, non_negative, ">= 0");
     r.enumeration(s, "fluid", "drag_law", kDragLaw, c.fluid.drag_law);
     r.ca_table(s, "fluid", c.fluid.ca_table);
+    r.enumeration(s, "fluid", "hull_flow", kHullFlow, c.fluid.hull_flow);
+    if (c.fluid.hull_flow != HullFlow::None && c.fluid.model == FluidModel::AddedMass)
+      r.fail(
+          s["hull_flow"], "fluid.hull_flow",
+          "the flow around the hull acts through the drag, and fluid.model added_mass has none: use drag or "
+          "both, or hull_flow: none");
   }
   {  // run
     const auto s = r.section(root, "run", {"duration_s", "timestep_s", "output_interval_s",
@@ -550,6 +558,7 @@ std::string dump_case_yaml(const Case& c) {
   line("  ", "drag_coefficient", num(c.fluid.drag_coefficient));
   line("  ", "drag_law", std::string(to_string(c.fluid.drag_law)));
   line("  ", "ca_table", to_string(c.fluid.ca_table));
+  if (c.fluid.hull_flow != HullFlow::None) line("  ", "hull_flow", std::string(to_string(c.fluid.hull_flow)));
   o += "run:\n";
   line("  ", "duration_s", num(c.run.duration_s));
   line("  ", "timestep_s", num(c.run.timestep_s));

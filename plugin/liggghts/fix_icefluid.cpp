@@ -7,12 +7,15 @@
 #include <string>
 
 #include "atom.h"
+#include "comm.h"
 #include "error.h"
 #include "memory.h"
 #include "modify.h"
 #include "update.h"
 
 #include "brash/error.hpp"
+#include "brash/hull/flow.hpp"
+#include "brash/hull/mesh.hpp"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -55,9 +58,11 @@ FixIceFluid::~FixIceFluid() {
   atom->delete_callback(id, 1);
   memory->destroy(state_);
   memory->destroy(output_);
+  memory->destroy(flow_);
 }
 
 void FixIceFluid::parse(int narg, char** arg) {
+  std::string hull_flow_file;
   try {
     for (int iarg = 3; iarg < narg;) {
       const std::string key = arg[iarg];
@@ -91,6 +96,12 @@ void FixIceFluid::parse(int narg, char** arg) {
         need(1), params_.water_density_kg_m3 = num(1), iarg += 2;
       } else if (key == "flow") {
         need(3), params_.flow_velocity_m_s = core::Vec3(num(1), num(2), num(3)), iarg += 4;
+      } else if (key == "hull_flow") {
+        need(5);
+        const std::string file = arg[iarg + 1];
+        hull_flow_origin_m_ = core::Vec3(num(2), num(3), num(4));
+        hull_flow_speed_m_s_ = num(5);
+        hull_flow_file = file, iarg += 6;
       } else if (key == "g") {
         need(1), params_.gravity_m_s2 = num(1), iarg += 2;
       } else if (key == "output_every") {
@@ -106,13 +117,34 @@ void FixIceFluid::parse(int narg, char** arg) {
       } else {
         const std::string msg = "fix icefluid: unknown keyword '" + key +
                                 "' (expected model, treatment, cd, drag_law, nu, ca, water_level, "
-                                "water_density, flow, g, gravity, output_every)";
+                                "water_density, flow, hull_flow, g, gravity, output_every)";
         error->all(FLERR, msg.c_str());
       }
     }
     params_.validate("fix icefluid");
+    if (!hull_flow_file.empty()) {
+      if (!params_.flow_velocity_m_s.isZero())
+        error->all(
+            FLERR,
+            "fix icefluid: 'flow' and 'hull_flow' exclude each other (the hull's flow is in still water)");
+      // Every rank builds the same table from the same file (deterministic): no communication,
+      // rank-independent.
+      const brash::hull::Mesh mesh = brash::hull::read_mesh(hull_flow_file);
+      hull_flow_ = brash::hull::thin_ship_flow(mesh, params_.water_level_m - hull_flow_origin_m_.z(),
+                                               hull_flow_speed_m_s_);
+      if (comm->me == 0) {
+        const auto n = hull_flow_.nodes();
+        const std::string msg = "fix icefluid: hull flow from " + hull_flow_file + ": " +
+                                std::to_string(n.prod()) + " table nodes, largest flow speed " +
+                                std::to_string(hull_flow_.max_speed_m_s()) + " m/s (ship " +
+                                std::to_string(hull_flow_speed_m_s_) + " m/s)\n";
+        if (screen) fputs(msg.c_str(), screen);
+        if (logfile) fputs(msg.c_str(), logfile);
+      }
+    }
   } catch (const brash::InputError& e) {
-    error->all(FLERR, e.what());
+    const std::string msg = std::string("fix icefluid: ") + e.what();
+    error->all(FLERR, msg.c_str());
   }
 }
 
@@ -156,12 +188,26 @@ void FixIceFluid::compute(bool replay) {
   a.output = update->ntimestep % output_every_ == 0 ? output_[0] : nullptr;
   a.mask = igroup == 0 ? nullptr : atom->mask;  // group "all": every atom, no per-atom mask test
   a.groupbit = groupbit;
+  if (!hull_flow_.empty()) {
+    // The hull frame (water level at z = 0) at this step; t = step * dt as fix move/mesh linear from step 0.
+    const double t = static_cast<double>(update->ntimestep) * update->dt;
+    const core::Vec3 frame(hull_flow_origin_m_.x() + hull_flow_speed_m_s_ * t, hull_flow_origin_m_.y(),
+                           params_.water_level_m);
+    const double* x = atom->x[0];
+    double* fl = flow_[0];
+    for (int i = 0; i < atom->nlocal; i++) {
+      const core::Vec3 u = hull_flow_.at(core::Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]) - frame);
+      fl[3 * i] = u.x(), fl[3 * i + 1] = u.y(), fl[3 * i + 2] = u.z();
+    }
+    a.flow_m_s = fl;
+  }
   core::apply_kernel(params_, a, update->dt, replay);
 }
 
 void FixIceFluid::grow_arrays(int nmax) {
   memory->grow(state_, nmax, kStateSize, "icefluid:state");
   memory->grow(output_, nmax, kOutputSize, "icefluid:output");
+  if (!hull_flow_.empty()) memory->grow(flow_, nmax, 3, "icefluid:flow");
   array_atom = output_;
 }
 
@@ -201,6 +247,10 @@ void FixIceFluid::unpack_restart(int nlocal, int nth) {
   for (int k = 0; k < kStateSize; k++) state_[nlocal][k] = extra[nlocal][m++];
 }
 
-double FixIceFluid::memory_usage() { return double(atom->nmax) * (kStateSize + kOutputSize) * sizeof(double); }
+double FixIceFluid::memory_usage() {
+  const int flow = hull_flow_.empty() ? 0 : 3;
+  return double(atom->nmax) * (kStateSize + kOutputSize + flow) * sizeof(double) +
+         3.0 * hull_flow_.nodes().prod() * sizeof(double);
+}
 
 }  // namespace brash::liggghts

@@ -12,6 +12,10 @@
      water_level  z of the free surface (m)                [0]
      water_density rho_w (kg/m^3)                          [1000]
      flow         vx vy vz, flow velocity (m/s)            [0 0 0]
+     hull_flow    FILE x0 y0 z0 speed: instead of `flow`, the water's flow around a hull (thin-ship double
+                  body, plugin/core hull_flow.hpp): the hull mesh FILE, its frame's origin in the scene at
+                  t = 0 and its speed along x (the hull moves with t = step * dt, as fix move/mesh linear from
+                  step 0); only the drag uses it   [none]
      g            gravity magnitude for buoyancy (m/s^2)   [9.81]
      gravity      no | yes: also apply -m g here (then do not use fix gravity)  [no]
      output_every N: fill the per-atom output only every N steps (dump interval)  [1]
@@ -22,10 +26,10 @@
 */
 #pragma once
 
-#include "fix.h"
-
+#include "brash/core/hull_flow.hpp"
 #include "brash/core/kernel.hpp"
 #include "brash/core/params.hpp"
+#include "fix.h"
 
 namespace brash::liggghts {
 
@@ -61,6 +65,11 @@ class FixIceFluid : public LAMMPS_NS::Fix {
   void parse(int narg, char** arg);
 
   brash::core::FluidParams params_;
+  // hull_flow: the table in the hull frame (water level at z = 0) and where that frame is at t = 0
+  brash::core::FlowTable hull_flow_;
+  brash::core::Vec3 hull_flow_origin_m_ = brash::core::Vec3::Zero();
+  double hull_flow_speed_m_s_ = 0.0;
+  double** flow_ = nullptr;  // per-atom flow velocity of this step (not carried: a function of x and t)
   int output_every_ = 1;  // per-atom output is only needed on dump steps
   double** state_ = nullptr;
   double** output_ = nullptr;

@@ -139,6 +139,7 @@ TEST(CaseLoader, DumpThenLoadGivesTheSameCase) {
     c.ice.seed = 18446744073709551615ull;
     c.fluid.model = brash::FluidModel::Both;
     c.fluid.drag_law = brash::DragLaw::SchillerNaumann;
+    c.fluid.hull_flow = brash::HullFlow::ThinShip;
     c.fluid.ca_table =
         std::string(name) == "jbc_quick" ? brash::CaTableSpec::uniform(1.0 / 3.0) : brash::CaTable::Text;
     c.ship.ice_class = brash::IceClass::IA_super;
@@ -218,6 +219,23 @@ TEST(CaseLoaderErrors, UniformCaTableNeedsAFiniteNonNegativeValue) {
   for (const char* bad : {"uniform", "uniform -1", "uniform abc", "uniform 1 2", "uniform .nan", "uniform2"})
     expect_error(std::string("name: x\nfluid:\n  ca_table: ") + bad + "\n", {"fluid.ca_table", ":3:"});
   expect_error("name: x\nfluid: {ca_table: table2}\n", {"fluid.ca_table", "table2", "uniform 2"});
+}
+
+TEST(CaseLoader, HullFlowDefaultsToStillWaterAndIsRead) {
+  const fs::path dir = temp_dir("hull_flow");
+  EXPECT_EQ(brash::load_case(write_case(dir, "name: h\n")).fluid.hull_flow, brash::HullFlow::None);
+  const Case c =
+      brash::load_case(write_case(dir, "name: h\nfluid: {model: drag, hull_flow: thin_ship}\n", "t.yaml"));
+  EXPECT_EQ(c.fluid.hull_flow, brash::HullFlow::ThinShip);
+  EXPECT_NE(brash::dump_case_yaml(c).find("  hull_flow: thin_ship\n"), std::string::npos);
+}
+
+TEST(CaseLoaderErrors, HullFlowNeedsTheDragAndAKnownName) {
+  // added_mass is the default model: the flow would do nothing, and silently
+  expect_error("name: x\nfluid:\n  hull_flow: thin_ship\n",
+               {"fluid.hull_flow", ":3:", "added_mass has none"});
+  expect_error("name: x\nfluid: {model: both, hull_flow: potential}\n",
+               {"fluid.hull_flow", "potential", "none | thin_ship"});
 }
 
 TEST(CaseLoaderErrors, NaNAndInfinity) {

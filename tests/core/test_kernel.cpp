@@ -57,21 +57,33 @@ TEST_P(KernelVsReference, SameForcesOverSeveralSteps) {
   Scene s = make_scene(400, 7 + variant);
   std::mt19937_64 gen(3);
   std::uniform_real_distribution<double> u(-1, 1);
+  // variant 3: each sphere its own flow (a hull's flow field, hull_flow.hpp); the reference takes it as the
+  // uniform flow of that sphere's evaluation
+  std::vector<double> flow;
+  if (variant == 3)
+    for (std::size_t j = 0; j < 3 * s.r.size(); ++j) flow.push_back(0.2 * u(gen));
+  auto kernel_arrays = [&] {
+    KernelArrays a = arrays(s);
+    if (!flow.empty()) a.flow_m_s = flow.data();
+    return a;
+  };
   for (int step = 0; step < 4; ++step) {
     std::vector<double> f_ref = s.f;
     for (std::size_t i = 0; i < s.r.size(); ++i) {
       const Vec3 x(s.x[3 * i], s.x[3 * i + 1], s.x[3 * i + 2]), v(s.v[3 * i], s.v[3 * i + 1], s.v[3 * i + 2]);
-      const FluidOutput o = evaluate(p, Sphere{s.r[i], s.m[i], x, v}, s.ref_state[i], dt);
+      FluidParams pi = p;
+      if (!flow.empty()) pi.flow_velocity_m_s = Vec3(flow[3 * i], flow[3 * i + 1], flow[3 * i + 2]);
+      const FluidOutput o = evaluate(pi, Sphere{s.r[i], s.m[i], x, v}, s.ref_state[i], dt);
       for (int k = 0; k < 3; ++k) f_ref[3 * i + k] = (f_ref[3 * i + k] + o.force_N[k]) * o.scale[k];
       s.ref_state[i] = advance(s.ref_state[i], v);
     }
     std::vector<double> f_before = s.f;
-    apply_kernel(p, arrays(s), dt, false);
+    apply_kernel(p, kernel_arrays(), dt, false);
     for (std::size_t j = 0; j < s.f.size(); ++j)
       ASSERT_NEAR(s.f[j], f_ref[j], 1e-13 * (1 + std::abs(f_ref[j]))) << "step " << step << " index " << j;
     // replay: the same forces again from the stored state, state untouched
     std::vector<double> state_before = s.state, f_replay = f_before;
-    KernelArrays a = arrays(s);
+    KernelArrays a = kernel_arrays();
     a.f_N = f_replay.data();
     apply_kernel(p, a, dt, true);
     EXPECT_EQ(f_replay, s.f);
@@ -121,7 +133,7 @@ INSTANTIATE_TEST_SUITE_P(AllModels, KernelVsReference,
                          ::testing::Combine(::testing::Values(FluidModel::Drag, FluidModel::AddedMass,
                                                               FluidModel::Both),
                                             ::testing::Values(Treatment::Implicit, Treatment::Explicit),
-                                            ::testing::Values(0, 1, 2)));
+                                            ::testing::Values(0, 1, 2, 3)));
 
 TEST(Kernel, MaskSelectsGroupAndOutputHoldsFractionAndCa) {
   FluidParams p;

@@ -113,6 +113,9 @@ struct FluidSpec {
   double drag_coefficient = 0.44;
   DragLaw drag_law = DragLaw::Constant;
   CaTableSpec ca_table;
+  // U_flow of the drag: none = still water (the default); thin_ship = the water pushed ahead and aside by the
+  // bow and following the stern (plugin/core hull_flow.hpp; LIGGGHTS only)
+  HullFlow hull_flow = HullFlow::None;
   bool operator==(const FluidSpec&) const = default;
 };
 

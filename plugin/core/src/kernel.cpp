@@ -88,7 +88,11 @@ void kernel(const FluidParams& p, const KernelArrays& a, double dt_s) {
     constexpr bool kWetTest = kDrag || !kImplicit;
     if (!kWetTest || h > 0.0) {
       if constexpr (kDrag) {
-        const double ux = vx - ux0, uy = vy - uy0, uz = vz - uz0;
+        double ux = vx - ux0, uy = vy - uy0, uz = vz - uz0;
+        if (a.flow_m_s) {  // the flow around a hull (hull_flow.hpp); a well-predicted branch
+          const double* fl = a.flow_m_s + 3 * i;
+          ux = vx - fl[0], uy = vy - fl[1], uz = vz - fl[2];
+        }
         const double speed2 = ux * ux + uy * uy + uz * uz;
         if (speed2 > 0.0) {
           const double speed = std::sqrt(speed2);

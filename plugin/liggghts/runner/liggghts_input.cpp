@@ -171,10 +171,15 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
   // fluid forces last: implicit added mass scales the sum of all other forces
   s += fmt::format(
       "fix fl {} icefluid model {} treatment {} cd {:.9g} drag_law {} nu {:.9g} ca {} water_level {:.9g} "
-      "water_density {:.9g} g {:.9g} output_every {}\n",
-      moving, to_string(c.fluid.model), to_string(c.fluid.treatment), c.fluid.drag_coefficient, to_string(c.fluid.drag_law),
-      c.water.kinematic_viscosity_m2_s, to_string(c.fluid.ca_table), c.water.level_m, c.water.density_kg_m3,
-      c.water.gravity_m_s2, dump_every);
+      "water_density {:.9g} g {:.9g} output_every {}{}\n",
+      moving, to_string(c.fluid.model), to_string(c.fluid.treatment), c.fluid.drag_coefficient,
+      to_string(c.fluid.drag_law), c.water.kinematic_viscosity_m2_s, to_string(c.fluid.ca_table),
+      c.water.level_m, c.water.density_kg_m3, c.water.gravity_m_s2, dump_every,
+      // the flow around the hull: the full hull, its frame's origin at t = 0 and speed, as fix hull above
+      c.fluid.hull_flow == HullFlow::ThinShip
+          ? fmt::format(" hull_flow {} {:.9g} 0 {:.9g} {:.9g}", opt.flow_hull_file, hull_x0, -c.hull.draft_m,
+                        c.ship.speed_m_s)
+          : std::string());
   s += fmt::format("variable t equal step*dt\n");
   if (sp.symmetry_y) {  // the whole ship: twice the half hull's fx, fz; fy = 0 by symmetry
     s += "variable hfx equal 2*f_hull[1]\nvariable hfy equal 0\nvariable hfz equal 2*f_hull[3]\n";

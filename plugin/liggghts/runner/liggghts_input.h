@@ -20,6 +20,9 @@ struct SceneOptions {
   // The full closed hull for fix brash/guard's hull check (the contact hull may be a band or a half);
   // empty = no hull check.
   std::string guard_hull_file = "hull.stl";
+  // The full hull for fluid.hull_flow's thin-ship flow (fix icefluid hull_flow), in the same frame as
+  // hull_file.
+  std::string flow_hull_file = "hull.stl";
   double hull_x_min_m = 0;      // x extent of the hull in the STL frame (stern, bow) for speedups.farfield
   double hull_x_max_m = 0;
 };

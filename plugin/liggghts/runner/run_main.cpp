@@ -468,6 +468,12 @@ int main(int argc, char** argv) {
       if (!resume || !fs::exists(run_dir / opt.guard_hull_file))
         brash::hull::write_stl(run_dir / opt.guard_hull_file, full_mesh);
     }
+    if (c.fluid.hull_flow != brash::HullFlow::None && reduced_mesh) {
+      opt.flow_hull_file =
+          "hull_full.stl";  // the sheet needs the whole hull under water, not the band or half
+      if (!fs::exists(run_dir / opt.flow_hull_file))
+        brash::hull::write_stl(run_dir / opt.flow_hull_file, full_mesh);
+    }
     opt.duration_s = run_duration;
     opt.ranks = ranks;
     opt.hull_x_min_m = xmin;

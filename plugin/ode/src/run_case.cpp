@@ -111,6 +111,11 @@ void check_packing(const std::vector<Sphere>& s, const fs::path& file, double to
 }
 
 core::FluidParams fluid_params(const Case& c) {
+  if (c.fluid.hull_flow != HullFlow::None)
+    throw InputError(
+        fmt::format("fluid.hull_flow: {} is implemented on LIGGGHTS only (brash-liggghts-run); "
+                    "brash-ode runs in still water (hull_flow: none)",
+                    to_string(c.fluid.hull_flow)));
   core::FluidParams p;
   p.water_density_kg_m3 = c.water.density_kg_m3;
   p.water_level_m = c.water.level_m;

@@ -122,6 +122,11 @@ int main(int argc, char** argv) {
     const auto limits = brash::guard::limits_for_case(
         c, brash::guard::domain_box(c, full.min_m.x(), full.max_m.x(), full.min_m.z(), full.max_m.z(),
                                     c.run.duration_s));
+    if (c.fluid.hull_flow != brash::HullFlow::None)
+      throw brash::InputError(
+          fmt::format("fluid.hull_flow: {} is implemented on LIGGGHTS only "
+                      "(brash-liggghts-run); brash-yade-run runs in still water (hull_flow: none)",
+                      to_string(c.fluid.hull_flow)));
     if (c.hull.band_m)
       mesh = brash::hull::clip_band(mesh, c.hull.draft_m - (*c.hull.band_m)[0], c.hull.draft_m + (*c.hull.band_m)[1]);
 
