@@ -195,7 +195,9 @@ void FixIceFluid::compute(bool replay) {
                            params_.water_level_m);
     const double* x = atom->x[0];
     double* fl = flow_[0];
+    const int* mask = atom->mask;
     for (int i = 0; i < atom->nlocal; i++) {
+      if (igroup != 0 && !(mask[i] & groupbit)) continue;  // the kernel skips them too (idle far-field ice)
       const core::Vec3 u = hull_flow_.at(core::Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]) - frame);
       fl[3 * i] = u.x(), fl[3 * i + 1] = u.y(), fl[3 * i + 2] = u.z();
     }
