@@ -250,7 +250,8 @@ const auto any_value = [](double) { return true; };
 
 }  // namespace
 
-Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const std::string& source) {
+Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const std::string& source,
+                bool check_model_keys) {
   const Reader r{source};
   YAML::Node root;
   try {
@@ -364,7 +365,7 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
     r.enumeration(s, "fluid", "drag_law", kDragLaw, c.fluid.drag_law);
     r.ca_table(s, "fluid", c.fluid.ca_table);
     r.enumeration(s, "fluid", "hull_flow", kHullFlow, c.fluid.hull_flow);
-    if (c.fluid.hull_flow != HullFlow::None && c.fluid.model == FluidModel::AddedMass)
+    if (check_model_keys && c.fluid.hull_flow != HullFlow::None && c.fluid.model == FluidModel::AddedMass)
       r.fail(
           s["hull_flow"], "fluid.hull_flow",
           "the flow around the hull acts through the drag, and fluid.model added_mass has none: use drag or "
@@ -465,13 +466,13 @@ double rayleigh_time_s(const Case& c) {
   return rayleigh_time_s(min_radius_m(c), c.ice.density_kg_m3, c.contact.youngs_modulus_pa, c.contact.poisson_ratio);
 }
 
-Case load_case(const fs::path& case_yaml) {
+Case load_case(const fs::path& case_yaml, bool check_model_keys) {
   std::ifstream in(case_yaml);
   if (!in) throw InputError(case_yaml.string() + ": cannot open case file");
   std::stringstream ss;
   ss << in.rdbuf();
   const fs::path dir = fs::absolute(case_yaml).parent_path();
-  return parse_case(ss.str(), dir, case_yaml.string());
+  return parse_case(ss.str(), dir, case_yaml.string(), check_model_keys);
 }
 
 // ---------------------------------------------------------------- writing

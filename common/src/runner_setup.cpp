@@ -36,7 +36,8 @@ int run_postprocessor(const fs::path& run_dir, const std::string& tag) {
 }
 
 Case load_case_with_overrides(const fs::path& case_file, const CaseOverrides& o, const std::string& tag) {
-  Case c = load_case(case_file);
+  // with --model, the model checks wait for the final parse below (a hull_flow case run with --model drag)
+  Case c = load_case(case_file, o.model.empty());
   std::string yaml = dump_case_yaml(c);
   auto set_key = [&](const std::string& section, const std::string& key, const std::string& value) {
     const std::string pat = "\n  " + key + ":";

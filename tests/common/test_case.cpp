@@ -10,6 +10,7 @@
 
 #include "brash/case.hpp"
 #include "brash/error.hpp"
+#include "brash/runner_setup.hpp"
 
 namespace fs = std::filesystem;
 using brash::Case;
@@ -236,6 +237,25 @@ TEST(CaseLoaderErrors, HullFlowNeedsTheDragAndAKnownName) {
                {"fluid.hull_flow", ":3:", "added_mass has none"});
   expect_error("name: x\nfluid: {model: both, hull_flow: potential}\n",
                {"fluid.hull_flow", "potential", "none | thin_ship"});
+}
+
+TEST(CaseLoader, HullFlowCaseRunsWithTheModelGivenOnTheCommandLine) {
+  // the paper case's template keeps model added_mass; a runner's --model drag makes the hull flow valid, and
+  // --model added_mass on a drag case with the flow is refused by the final parse
+  const fs::path dir = temp_dir("hull_flow_override");
+  const fs::path am = write_case(dir, "name: h\nfluid:\n  hull_flow: thin_ship\n");
+  const Case c = brash::run::load_case_with_overrides(am, {"drag", "", -1}, "[test]");
+  EXPECT_EQ(c.fluid.model, brash::FluidModel::Drag);
+  EXPECT_EQ(c.fluid.hull_flow, brash::HullFlow::ThinShip);
+  EXPECT_THROW(brash::run::load_case_with_overrides(am, {"", "", -1}, "[test]"), brash::InputError);
+  const fs::path drag = write_case(dir, "name: h\nfluid: {model: drag, hull_flow: thin_ship}\n", "d.yaml");
+  try {
+    (void)brash::run::load_case_with_overrides(drag, {"added_mass", "", -1}, "[test]");
+    ADD_FAILURE() << "no InputError";
+  } catch (const brash::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("fluid.hull_flow"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("command-line overrides"), std::string::npos) << e.what();
+  }
 }
 
 TEST(CaseLoaderErrors, NaNAndInfinity) {
