@@ -30,7 +30,8 @@ int main(int argc, char** argv) {
 
   try {
     const fs::path case_yaml = fs::is_directory(case_arg) ? fs::path(case_arg) / "case.yaml" : fs::path(case_arg);
-    // the packing does not depend on the fluid model: a case run with --model (its model keys checked then) packs
+    // the packing does not depend on the fluid model: a case run with --model packs (the runner checks the
+    // model keys after the override)
     const brash::Case c = brash::load_case(case_yaml, /*check_model_keys=*/false);
     brash::PackingRequest q = brash::packing_request(c, case_yaml.string());
     if (!mode_arg.empty())

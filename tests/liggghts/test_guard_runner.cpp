@@ -88,3 +88,31 @@ TEST(LiggghtsGuardRunner, SoftIceBelowFiveMegapascalRuns) {
   EXPECT_NE(brash::test::read_text(dir / "run/meta.json").find("\"complete\""), std::string::npos);
   fs::remove_all(dir);
 }
+
+// fluid.hull_flow through the runner: the paper case's template keeps model added_mass, so a hull-flow case
+// is run with --model drag (the case's model checks wait for the override); without it the runner refuses,
+// naming the key. The fix gets the full hull and the hull's start and speed, and builds its table.
+TEST(LiggghtsGuardRunner, HullFlowCaseRunsWithModelDragAndIsRefusedWithAddedMass) {
+  const fs::path dir = brash::test::fresh_dir("hull_flow_runner");
+  write_small_case(dir / "case", "0.1", "");
+  std::string yaml = brash::test::read_text(dir / "case/case.yaml");
+  yaml = std::regex_replace(yaml, std::regex("\n  ca_table: table1"),
+                            "\n  ca_table: table1\n  hull_flow: thin_ship");
+  std::ofstream(dir / "case/case.yaml") << yaml;
+  const std::string cmd = brash::test::runner_command(dir / "case", dir / "run");
+  ASSERT_NE(std::system((cmd + " > '" + (dir / "refused.log").string() + "' 2>&1").c_str()), 0);
+  const std::string refused = brash::test::read_text(dir / "refused.log");
+  EXPECT_NE(refused.find("fluid.hull_flow"), std::string::npos) << refused;
+  EXPECT_NE(refused.find("added_mass has none"), std::string::npos) << refused;
+  fs::remove_all(dir / "run");
+  ASSERT_EQ(std::system((cmd + " --model drag > '" + (dir / "run.log").string() + "' 2>&1").c_str()), 0)
+      << brash::test::read_text(dir / "run.log");
+  const std::string in = brash::test::read_text(dir / "run/in.lmp");
+  EXPECT_NE(in.find("model drag "), std::string::npos) << in;
+  EXPECT_NE(in.find(" hull_flow hull_full.stl -7.05 0 -0.4125 0.482\n"), std::string::npos) << in;
+  EXPECT_NE(brash::test::read_text(dir / "run/log.txt").find("fix icefluid: hull flow from hull_full.stl"),
+            std::string::npos);
+  EXPECT_NE(brash::test::read_text(dir / "run/case.yaml").find("  hull_flow: thin_ship\n"), std::string::npos);
+  EXPECT_NE(brash::test::read_text(dir / "run/meta.json").find("\"complete\""), std::string::npos);
+  fs::remove_all(dir);
+}

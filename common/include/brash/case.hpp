@@ -208,8 +208,8 @@ double rayleigh_time_s(const Case& c);
 // (e.g. "ice.porosity") and the line where known, for: unreadable file, YAML syntax, unknown key,
 // wrong type, NaN/inf, out-of-range value, unknown enum text, inconsistent values (including a
 // run.timestep_s above kMaxTimestepOverRayleigh of the Rayleigh time).
-// check_model_keys = false skips the checks that tie other keys to fluid.model (fluid.hull_flow needs the drag):
-// for a runner that overrides the model and parses the result again with every check.
+// check_model_keys = false skips the checks that tie other keys to fluid.model (fluid.hull_flow needs the
+// drag): for a runner that overrides the model and parses the result again with every check.
 Case load_case(const std::filesystem::path& case_yaml, bool check_model_keys = true);
 
 // Same, from YAML text; relative paths resolve against base_dir; `source` names it in messages.
