@@ -127,11 +127,18 @@ void FixIceFluid::parse(int narg, char** arg) {
         error->all(
             FLERR,
             "fix icefluid: 'flow' and 'hull_flow' exclude each other (the hull's flow is in still water)");
+      if (!params_.has_drag())
+        error->all(FLERR, "fix icefluid: 'hull_flow' acts through the drag, and model added_mass has none");
       // Every rank builds the same table from the same file (deterministic): no communication,
-      // rank-independent.
-      const brash::hull::Mesh mesh = brash::hull::read_mesh(hull_flow_file);
-      hull_flow_ = brash::hull::thin_ship_flow(mesh, params_.water_level_m - hull_flow_origin_m_.z(),
-                                               hull_flow_speed_m_s_);
+      // rank-independent. The mesh reader's and the table's errors name the file or the problem, not the fix.
+      try {
+        const brash::hull::Mesh mesh = brash::hull::read_mesh(hull_flow_file);
+        hull_flow_ = brash::hull::thin_ship_flow(mesh, params_.water_level_m - hull_flow_origin_m_.z(),
+                                                 hull_flow_speed_m_s_);
+      } catch (const brash::InputError& e) {
+        const std::string msg = std::string("fix icefluid: ") + e.what();
+        error->all(FLERR, msg.c_str());
+      }
       if (comm->me == 0) {
         const auto n = hull_flow_.nodes();
         const std::string msg = "fix icefluid: hull flow from " + hull_flow_file + ": " +
@@ -143,8 +150,7 @@ void FixIceFluid::parse(int narg, char** arg) {
       }
     }
   } catch (const brash::InputError& e) {
-    const std::string msg = std::string("fix icefluid: ") + e.what();
-    error->all(FLERR, msg.c_str());
+    error->all(FLERR, e.what());
   }
 }
 

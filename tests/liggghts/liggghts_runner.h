@@ -44,6 +44,16 @@ inline std::vector<std::vector<double>> read_table(const std::filesystem::path& 
   return rows;
 }
 
+// The settings every granular test scene starts with (SI units, a closed box, per-atom map, no sorting so that
+// atoms keep their order); the scene's region, box and atoms follow.
+inline constexpr char kGranularPreamble[] =
+    "atom_style granular\n"
+    "atom_modify map array sort 0 0.0\n"
+    "boundary f f f\n"
+    "newton off\n"
+    "communicate single vel yes\n"
+    "units si\n";
+
 // Material and contact lines of a one-material (type 1) ice scene: Hertz with history, E 5 MPa,
 // Poisson 0.3, restitution 0.3 and the given friction. Must follow create_box / read_restart.
 inline std::string ice_contact_model(const std::string& friction) {

@@ -111,8 +111,11 @@ INSTANTIATE_TEST_SUITE_P(
                       BadArgs{"ca uniform -2", "added-mass coefficients must be finite and >= 0"},
                       BadArgs{"flow 1 2", "keyword 'flow' needs 3 value(s)"},
                       BadArgs{"gravity maybe", "keyword 'gravity' expects yes or no"},
-                      BadArgs{"hull_flow nohull.stl 0 0 -0.4 0.5",
+                      BadArgs{"model drag hull_flow nohull.stl 0 0 -0.4 0.5",
                               "fix icefluid: nohull.stl: cannot open the file"},
+                      BadArgs{"hull_flow nohull.stl 0 0 -0.4 0.5",
+                              "fix icefluid: 'hull_flow' acts through the drag, and model added_mass has none"},
+                      BadArgs{"water_density -1000", "ERROR: fix icefluid: invalid fluid parameters"},
                       BadArgs{"hull_flow nohull.stl 0 0", "keyword 'hull_flow' needs 5 value(s)"},
                       BadArgs{"flow 0.1 0 0 hull_flow nohull.stl 0 0 -0.4 0.5",
                               "'flow' and 'hull_flow' exclude each other"}));

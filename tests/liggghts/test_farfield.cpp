@@ -23,15 +23,10 @@ constexpr double kAhead = 0.2, kBehind = 0.1, kBow = 0.1;
 
 // granular box x in [-0.1, x_hi], |y| < 0.5, |z| < 0.1; 2 ranks split it along x
 std::string box_header(double x_hi, int ranks) {
-  return fmt::format(R"(atom_style granular
-atom_modify map array sort 0 0.0
-boundary f f f
-newton off
-communicate single vel yes
-units si
-{procs}region reg block -0.1 {x_hi} -0.5 0.5 -0.1 0.1 units box
+  return fmt::format(R"({preamble}{procs}region reg block -0.1 {x_hi} -0.5 0.5 -0.1 0.1 units box
 create_box 1 reg
 )",
+                     fmt::arg("preamble", brash::test::kGranularPreamble),
                      fmt::arg("procs", ranks > 1 ? "processors 2 1 1\n" : ""), fmt::arg("x_hi", x_hi));
 }
 

@@ -39,13 +39,7 @@ std::string scene(long steps, const std::string& flow_args) {
                                                                    {1.0, 1.5},
                                                                    {6.0, 0.0}})
     atoms += fmt::format("create_atoms 1 single {} {} {} units box\n", x, y, z);
-  return fmt::format(R"(atom_style granular
-atom_modify map array sort 0 0.0
-boundary f f f
-newton off
-communicate single vel yes
-units si
-processors * 1 1
+  return fmt::format(R"({preamble}processors * 1 1
 region reg block -5 8 -2 2 -1 0.5 units box
 create_box 1 reg
 neighbor 0.002 bin
@@ -60,6 +54,7 @@ dump out all custom {steps} dump.*.txt id x y z vx vy vz fx fy fz
 dump_modify out format "%d %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g"
 run {steps}
 )",
+                     fmt::arg("preamble", brash::test::kGranularPreamble),
                      fmt::arg("contacts", brash::test::ice_contact_model("0.3")), fmt::arg("dt", dt),
                      fmt::arg("atoms", atoms), fmt::arg("d", d), fmt::arg("rho", rho_i),
                      fmt::arg("flow", flow_args), fmt::arg("steps", steps));

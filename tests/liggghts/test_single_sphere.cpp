@@ -20,13 +20,7 @@ constexpr double d = 0.017578, r = d / 2, rho_i = 900, rho_w = 1000, g = 9.81;
 // One sphere in a closed box whose z-range is split between ranks (so the sphere migrates).
 std::string scene(double z0, double dt, const std::string& fix_args, int print_every, long steps,
                   const std::string& extra_before_run = "") {
-  return fmt::format(R"(atom_style granular
-atom_modify map array sort 0 0.0
-boundary f f f
-newton off
-communicate single vel yes
-units si
-processors 1 1 *
+  return fmt::format(R"({preamble}processors 1 1 *
 region reg block -0.05 0.05 -0.05 0.05 -2.0 0.1 units box
 create_box 1 reg
 neighbor 0.002 bin
@@ -45,6 +39,7 @@ fix out all print {every} "${{t}} ${{z}} ${{vz}}" file out.txt screen no title "
 {extra}
 run {steps}
 )",
+                     fmt::arg("preamble", brash::test::kGranularPreamble),
                      fmt::arg("contacts", brash::test::ice_contact_model("0.3")),
                      fmt::arg("dt", dt), fmt::arg("z0", z0), fmt::arg("d", d), fmt::arg("rho", rho_i),
                      fmt::arg("fix_args", fix_args), fmt::arg("every", print_every), fmt::arg("extra", extra_before_run),

@@ -457,23 +457,27 @@ int main(int argc, char** argv) {
                                brash::liggghts::data_file(spheres, box, c.ice.density_kg_m3,
                                                           c.speedups.symmetry_y ? 4 : 3));
     }
+    // The full hull in the run dir, for the guard and the hull flow: hull.stl itself unless the contact mesh is
+    // reduced, else hull_full.stl, written once per runner (also on resume when an older run dir lacks it).
+    bool full_hull_written = false;
+    auto full_hull_file = [&]() -> std::string {
+      if (!reduced_mesh) return "hull.stl";
+      if (!full_hull_written && (!resume || !fs::exists(run_dir / "hull_full.stl")))
+        brash::hull::write_stl(run_dir / "hull_full.stl", full_mesh);
+      full_hull_written = true;
+      return "hull_full.stl";
+    };
     brash::liggghts::SceneOptions opt;
     if (!full_closed || c.guards.max_hull_penetration_d <= 0) {
       opt.guard_hull_file.clear();
       if (!full_closed)
         std::cerr << "[brash-liggghts] note: " << c.hull.file.string()
                   << " is not a closed surface: the hull penetration guard is off\n";
-    } else if (reduced_mesh) {
-      opt.guard_hull_file = "hull_full.stl";  // also written on resume when an older run dir lacks it
-      if (!resume || !fs::exists(run_dir / opt.guard_hull_file))
-        brash::hull::write_stl(run_dir / opt.guard_hull_file, full_mesh);
+    } else {
+      opt.guard_hull_file = full_hull_file();
     }
-    if (c.fluid.hull_flow != brash::HullFlow::None && reduced_mesh) {
-      opt.flow_hull_file =
-          "hull_full.stl";  // the sheet needs the whole hull under water, not the band or half
-      if (!fs::exists(run_dir / opt.flow_hull_file))
-        brash::hull::write_stl(run_dir / opt.flow_hull_file, full_mesh);
-    }
+    // the thin-ship sheet needs the whole hull under water, not the band or the half
+    if (c.fluid.hull_flow != brash::HullFlow::None) opt.flow_hull_file = full_hull_file();
     opt.duration_s = run_duration;
     opt.ranks = ranks;
     opt.hull_x_min_m = xmin;
