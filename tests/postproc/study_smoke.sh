@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# scripts/brash-study STUDY=smoke end to end into a temp dir (docs/study.md and docs/paper_runs are not touched),
+# then the paper-run archive: a complete run in the paper dir is archived, and listed from its archive once its
+# run directory is gone.
+#   bash study_smoke.sh REPO BIN_DIR TMP_DIR
+set -euo pipefail
+repo="$1" bin="$2" tmp="$3"
+rm -rf "$tmp" && mkdir -p "$tmp/paper"
+study() {
+  STUDY=smoke BRASH_BIN="$bin" STUDY_WORK="$tmp/work" STUDY_DOC="$tmp/study.md" STUDY_PAPER_DIR="$tmp/paper" \
+    STUDY_ARCHIVE="$tmp/archive" "$repo/scripts/brash-study"
+}
+expect() {  # expect TEXT...: every TEXT is in the document
+  local t
+  for t in "$@"; do grep -qF -- "$t" "$tmp/study.md" || { echo "missing in study.md: $t"; cat "$tmp/study.md"; exit 1; }; done
+}
+study
+expect '## (a) Paper comparison' '## (b) Speed sweep' '## (c) Sensitivities' '## (d) Engines' \
+  '## (e) Runs and the commands' 'reduced case' '| liggghts | added_mass | 2 |' 'brash-liggghts-run' \
+  '![full-scale resistance vs the paper](study_figs/paper_bars.png)' '![R1 force history](study_figs/R1_force_history.png)' \
+  'Fig. 4 analog'
+test -s "$tmp/study_manifest.tsv" && test -s "$tmp/study_figs/paper_bars.png" && test -s "$tmp/study_figs/R1_force_history.png"
+if grep -q 'paper-liggghts' "$tmp/study.md"; then echo "a paper run listed with none made"; exit 1; fi
+test ! -e "$tmp/archive"
+
+# a complete run standing in for the drag paper run: listed and archived
+cp -r "$tmp/work/runs/smoke_drag" "$tmp/paper/paper-liggghts-drag"
+study
+expect '/paper/paper-liggghts-drag` | smoke_base | liggghts | drag |'
+for f in meta.json case.yaml report.json report.md hull_force.csv force_history.png; do
+  test -s "$tmp/archive/paper-liggghts-drag/$f" || { echo "not archived: $f"; exit 1; }
+done
+ls "$tmp/archive/paper-liggghts-drag"/ice_views_*.png > /dev/null
+cmp "$tmp/paper/paper-liggghts-drag/report.json" "$tmp/archive/paper-liggghts-drag/report.json"
+
+# its run directory gone (a new machine): listed from the archive, not run again
+rm -rf "$tmp/paper/paper-liggghts-drag"
+study
+expect '/archive/paper-liggghts-drag` | smoke_base | liggghts | drag |'
+test ! -e "$tmp/paper/paper-liggghts-drag"
+# a paired ensemble's summary: listed, archived, and listed from the archive once its folder is gone
+qs="1:contact.youngs_modulus_pa=3.125e5,run.timestep_s=8.0e-4"
+mkdir -p "$tmp/paper/fluid-reading"
+cat > "$tmp/paper/fluid-reading/ensemble-smoke.json" <<JSON
+{ "side_a": "$qs", "side_b": "$qs,fluid.model=drag", "case": "jbc_quick", "pairs": 3,
+  "mean_a_N": 10.0, "mean_b_N": 12.5, "diff_rel": 0.2222, "ci95_rel": 0.0123 }
+JSON
+study
+expect '| P1 |' 'drag on added_mass' '+22.2 % ± 1.2 %' 'paper/fluid-reading/ensemble-smoke.json'
+cmp "$tmp/paper/fluid-reading/ensemble-smoke.json" "$tmp/archive/ensembles/fluid-reading/ensemble-smoke.json"
+rm -rf "$tmp/paper/fluid-reading"
+study
+expect '| P1 |' '+22.2 % ± 1.2 %' 'archive/ensembles/fluid-reading/ensemble-smoke.json'
+
+# a run still in progress (no complete report) is not archived
+mkdir -p "$tmp/paper/paper-liggghts-both" && cp "$tmp/work/runs/smoke_am/meta.json" "$tmp/paper/paper-liggghts-both/"
+study
+test ! -e "$tmp/archive/paper-liggghts-both"
+cat "$tmp/study.md"
