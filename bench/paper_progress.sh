@@ -4,6 +4,8 @@
 # from its hull_force.csv; a LIGGGHTS run still going from its raw force files (every attempt of a run resumed in pieces; a later attempt's row replaces an
 # earlier one), an ODE run from hull_force.csv.
 #   bash bench/paper_progress.sh [BIN_S (0.5)] [RUNS_DIR (runs)]
+# WINDOW="T0 T1" adds a last row: each run's mean over the full bins inside [T0, T1] s (equal-length bins: the
+# window mean), with the number of bins, so that runs are compared over the same window (e.g. one still going).
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 bin_s="${1:-0.5}"
@@ -71,3 +73,13 @@ for k in $all_keys; do
   done
   echo
 done
+if [ -n "${WINDOW:-}" ]; then
+  read -r w0 w1 <<< "$WINDOW"
+  printf '| mean %s-%s |' "$w0" "$w1"
+  for c in "${cols[@]}"; do
+    awk -v b="$bin_s" -v f="$full" -v w0="$w0" -v w1="$w1" '
+      $1 * b >= w0 - 1e-9 && ($1 + 1) * b <= w1 + 1e-9 && $3 >= f - 1 { s += $2; n++ }
+      END { if (n) printf " %.3f (%d bins) |", s / n, n; else printf " — |" }' "$tmp/$c"
+  done
+  echo
+fi
