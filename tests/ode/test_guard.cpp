@@ -154,3 +154,23 @@ TEST_F(OdeGuard, PieceBeyondTheChannelEndsLeavesTheSceneAndTheRunGoesOn) {
                                    R"(channel's ends \(x < -7\.49[0-9]* or x > 1\.04[0-9]* m\); 1 in all)")));
   EXPECT_EQ(slurp(with.run / "hull_force.csv"), slurp(without.run / "hull_force.csv"));
 }
+
+// fluid.hull_flow on brash-ode (the same thin-ship flow as on LIGGGHTS): a drag run with it completes and
+// says so in its log; with model added_mass (no drag for the flow to act through) the case is refused by
+// name.
+TEST_F(OdeGuard, HullFlowRunsWithDragAndIsRefusedWithAddedMass) {
+  const auto r =
+      run(make_case("hull_flow", "model: added_mass", "model: drag\n  hull_flow: thin_ship", ""), "0.1");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.meta.find("\"status\": \"complete\""), std::string::npos) << r.meta;
+  const std::string log = slurp(r.run / "log.txt");
+  EXPECT_NE(log.find("hull flow thin_ship: "), std::string::npos) << log;
+  EXPECT_NE(slurp(r.run / "case.yaml").find("hull_flow: thin_ship"), std::string::npos);
+
+  const auto am =
+      run(make_case("hull_flow_am", "treatment: implicit", "treatment: implicit\n  hull_flow: thin_ship", ""),
+          "0.1");
+  EXPECT_NE(am.exit_code, 0);
+  EXPECT_NE(am.err.find("fluid.hull_flow"), std::string::npos) << am.err;
+  EXPECT_NE(am.err.find("added_mass"), std::string::npos) << am.err;
+}

@@ -17,6 +17,7 @@
 #include "brash/case.hpp"
 #include "brash/error.hpp"
 #include "brash/guard.hpp"
+#include "brash/hull/flow.hpp"
 #include "brash/hull/mesh.hpp"
 #include "brash/hull/proximity.hpp"
 #include "brash/ode/restart.hpp"
@@ -111,11 +112,6 @@ void check_packing(const std::vector<Sphere>& s, const fs::path& file, double to
 }
 
 core::FluidParams fluid_params(const Case& c) {
-  if (c.fluid.hull_flow != HullFlow::None)
-    throw InputError(
-        fmt::format("fluid.hull_flow: {} is implemented on LIGGGHTS only (brash-liggghts-run); "
-                    "brash-ode runs in still water (hull_flow: none)",
-                    to_string(c.fluid.hull_flow)));
   core::FluidParams p;
   p.water_density_kg_m3 = c.water.density_kg_m3;
   p.water_level_m = c.water.level_m;
@@ -257,6 +253,12 @@ RunResult run_case(const RunOptions& cli_options) {
   std::unique_ptr<hull::Proximity> hull_query;
   const bool hull_closed = full.closed;
   if (limits.max_hull_penetration_d && hull_closed) hull_query = std::make_unique<hull::Proximity>(mesh);
+  // The water's flow around the hull (fluid.hull_flow) from the full hull, as the LIGGGHTS runner builds it:
+  // the STL's frame is the hull body's lowered by the draft (body frame: waterline at z = 0), so the water
+  // level is at z = level + draft in the STL's frame.
+  core::FlowTable hull_flow;
+  if (c.fluid.hull_flow == HullFlow::ThinShip)
+    hull_flow = hull::thin_ship_flow(mesh, c.water.level_m + c.hull.draft_m, c.ship.speed_m_s);
   if (c.hull.band_m) mesh = hull::clip_band(mesh, c.hull.draft_m - (*c.hull.band_m)[0], c.hull.draft_m + (*c.hull.band_m)[1]);
   std::vector<double> verts;
   std::vector<dTriIndex> tris;
@@ -386,6 +388,13 @@ RunResult run_case(const RunOptions& cli_options) {
     for (long k = 0; k < settle_steps; ++k) w.step();
     if (settle_steps) logln(fmt::format("settled {} s ({} steps)", o.settle_s, settle_steps));
     w.set_hull_velocity(Vec3(speed, 0, 0));
+    // the hull's flow from when it moves (a parked hull has none)
+    if (!hull_flow.empty()) {
+      logln(fmt::format("hull flow {}: {} table nodes, largest flow speed {:.4g} m/s (ship {} m/s)",
+                        to_string(c.fluid.hull_flow), hull_flow.nodes().prod(), hull_flow.max_speed_m_s(),
+                        speed));
+      w.set_hull_flow(std::move(hull_flow));
+    }
     long ps_settle = w.stats().particle_steps;
     auto stats0 = w.stats();
     // Loop state that a restart file carries besides the world.

@@ -244,9 +244,22 @@ std::size_t World::retired_count() const {
       std::count_if(spheres_.begin(), spheres_.end(), [](const SphereRec& s) { return s.retired; }));
 }
 
+void World::set_hull_flow(core::FlowTable table) {
+  if (!hull_body_) throw std::invalid_argument("World::set_hull_flow: no hull (call set_hull first)");
+  if (!table.empty() && !fluid_.has_drag())
+    throw std::invalid_argument(
+        "World::set_hull_flow: the hull's flow acts through the drag; this fluid model has none");
+  hull_flow_ = std::move(table);
+}
+
 void World::apply_fluid() {
   const double g = fluid_.gravity_m_s2;
   std::size_t awake = 0;
+  // with the hull's flow, a copy of the parameters whose uniform flow is set per sphere
+  core::FluidParams params = fluid_;
+  const Vec3 flow_frame = hull_flow_.empty()
+                              ? Vec3::Zero()
+                              : Vec3(hull_position().x(), hull_position().y(), fluid_.water_level_m);
   for (auto& s : spheres_) {
     // Disabled bodies accumulate forces (ode.md): never add to them.
     if (s.culled || !dBodyIsEnabled(s.body)) continue;
@@ -254,7 +267,8 @@ void World::apply_fluid() {
     const dReal* p = dBodyGetPosition(s.body);
     const dReal* v = dBodyGetLinearVel(s.body);
     const Vec3 x(p[0], p[1], p[2]), vel(v[0], v[1], v[2]);
-    s.last = core::evaluate(fluid_, core::Sphere{s.radius_m, s.mass_kg, x, vel}, s.state, stepper_.dt_s);
+    if (!hull_flow_.empty()) params.flow_velocity_m_s = hull_flow_.at(x - flow_frame);
+    s.last = core::evaluate(params, core::Sphere{s.radius_m, s.mass_kg, x, vel}, s.state, stepper_.dt_s);
     Vec3 f = s.last.force_N;
     f.z() -= s.mass_kg * g;
     double M = s.mass_kg;

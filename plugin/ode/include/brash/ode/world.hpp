@@ -2,24 +2,28 @@
 // stepped with dWorldQuickStep, with the per-sphere fluid forces of brash_core (buoyancy, drag, added mass).
 //
 // Per step (World::step):
-//   1. fluid: for every awake, uncull'd sphere: out = core::evaluate(params, {r, m, x(n), v(n)}, state, dt);
+//   1. fluid: for every awake, uncull'd sphere: out = core::evaluate(params, {r, m, x(n), v(n)}, state, dt)
+//      (with a hull flow table, params' flow velocity is the table's at x(n) in the hull's frame);
 //      the applied force is G = (-m g e_z + out.force_N) (.) out.scale (.) (M / m) and the body mass is M
 //      (see "Implicit added mass in ODE" below); state = advance(state, v(n)).
-//   2. collide: broad phase (our x-y grid, or ODE's sweep-and-prune), contact joints (dContactApprox1, Coulomb mu per pair type, sphere body first).
-//   3. dWorldQuickStep (semi-implicit Euler: v(n+1) = v(n) + dt (G + F_contact) / M, x(n+1) = x(n) + dt v(n+1)).
-//   4. hull force = -sum fb.f1 over the hull contacts (feedback read after the step, before emptying the group).
+//   2. collide: broad phase (our x-y grid, or ODE's sweep-and-prune), contact joints (dContactApprox1,
+//      Coulomb mu per pair type, sphere body first).
+//   3. dWorldQuickStep (semi-implicit Euler: v(n+1) = v(n) + dt (G + F_contact) / M,
+//      x(n+1) = x(n) + dt v(n+1)).
+//   4. hull force = -sum fb.f1 over the hull contacts (feedback read after the step, before emptying
+//      the group).
 //
-// Implicit added mass in ODE (the "treatment" of physics.md). The core asks for (m + m_a,i) a_i = F_i per axis,
-// F = every force on the sphere. ODE only knows the contact forces inside its solver, and its translational mass
-// is isotropic. We give the body the isotropic mass M = m + m_a,h (m_a,h = rho_w V_s (Ca_x + Ca_y)/2, the
-// horizontal added mass, updated every step) and apply G_i = F_ext,i * M / (m + m_a,i). Then
+// Implicit added mass in ODE (the "treatment" of physics.md). The core asks for (m + m_a,i) a_i = F_i per
+// axis, F = every force on the sphere. ODE only knows the contact forces inside its solver, and its
+// translational mass is isotropic. We give the body the isotropic mass M = m + m_a,h (m_a,h = rho_w V_s (Ca_x
+// + Ca_y)/2, the horizontal added mass, updated every step) and apply G_i = F_ext,i * M / (m + m_a,i). Then
 //   - external forces (gravity, buoyancy, drag) get exactly a_i = F_ext,i / (m + m_a,i) on every axis;
 //   - contact forces get exactly 1/(m + m_a) on x and y (Table 1: Ca_x = Ca_y), and 1/M instead of
 //     1/(m + m_a,z) on z (the solver sees the heavier horizontal inertia; Table 1 has Ca_z <= Ca_x except in
 //     the paper's "text" variant). Nothing is lagged, so it is as stable as plain ODE for any Ca.
-// The alternative ImplicitMode::ScaleForces keeps M = m and only scales the external forces (contacts then see
-// the bare mass m: no added inertia in collisions). Both are exact for a sphere without contacts.
-// The explicit treatment keeps M = m and adds the core's lagged F_a = -m_a (v(n) - v(n-1)) / dt.
+// The alternative ImplicitMode::ScaleForces keeps M = m and only scales the external forces (contacts then
+// see the bare mass m: no added inertia in collisions). Both are exact for a sphere without contacts. The
+// explicit treatment keeps M = m and adds the core's lagged F_a = -m_a (v(n) - v(n-1)) / dt.
 #pragma once
 #include <ode/ode.h>
 
@@ -30,6 +34,7 @@
 #include <vector>
 
 #include "brash/core/fluid.hpp"
+#include "brash/core/hull_flow.hpp"
 
 namespace brash::ode {
 
@@ -149,6 +154,15 @@ class World {
   bool retired(std::size_t i) const { return spheres_[i].retired; }
   std::size_t retired_count() const;
 
+  // The water's flow around the hull (fluid.hull_flow; brash::hull::thin_ship_flow): a table in the hull's
+  // frame, x and y from the hull body's position, z = 0 at the water level (FluidParams::water_level_m). From
+  // the next step on, each sphere's drag acts on its velocity relative to the table's flow at its centre, at
+  // the hull's position at the start of the step (as fix icefluid's hull_flow). Needs the hull (set_hull) and
+  // a fluid model with drag (throws std::invalid_argument otherwise). Not in restart files: a resumed run
+  // sets it again.
+  void set_hull_flow(core::FlowTable table);
+  bool has_hull_flow() const { return !hull_flow_.empty(); }
+
   void set_hull_velocity(const Vec3& v);
   bool has_hull() const { return hull_body_ != nullptr; }
   Vec3 hull_position() const;
@@ -186,6 +200,7 @@ class World {
   void set_ode_mass(SphereRec& s, double M);
 
   core::FluidParams fluid_;
+  core::FlowTable hull_flow_;  // empty: still water (or fluid_'s uniform flow)
   StepperSettings stepper_;
   Frictions friction_;
   Skips skips_;
