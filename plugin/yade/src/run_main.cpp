@@ -124,8 +124,8 @@ int main(int argc, char** argv) {
                                     c.run.duration_s));
     if (c.fluid.hull_flow != brash::HullFlow::None)
       throw brash::InputError(
-          fmt::format("fluid.hull_flow: {} is implemented on LIGGGHTS only "
-                      "(brash-liggghts-run); brash-yade-run runs in still water (hull_flow: none)",
+          fmt::format("fluid.hull_flow: {} is implemented on LIGGGHTS and ODE "
+                      "(brash-liggghts-run, brash-ode); brash-yade-run runs in still water (hull_flow: none)",
                       to_string(c.fluid.hull_flow)));
     if (c.hull.band_m)
       mesh = brash::hull::clip_band(mesh, c.hull.draft_m - (*c.hull.band_m)[0], c.hull.draft_m + (*c.hull.band_m)[1]);
