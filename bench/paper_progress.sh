@@ -13,6 +13,13 @@ runs="${2:-$here/runs}"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
 cols=()
 shopt -s nullglob
+# "t fx" rows of a finished run's hull_force.csv
+csv_rows() { awk -F, 'NR > 1 && NF >= 4 { print $1, $2 }' "$1"; }
+# "t fx" rows on stdin -> "bin mean(-fx) rows" per BIN_S, sorted
+bin_rows() {
+  awk -v b="$bin_s" '{ k = int($1 / b + 1e-9); s[k] += -$2; n[k]++ }
+       END { for (k in s) printf "%d %.3f %d\n", k, s[k] / n[k], n[k] }' | sort -n
+}
 for d in "$runs"/paper-*/; do
   d="${d%/}"; name="$(basename "$d")"
   raws=("$d"/hull_force*.raw)
@@ -27,9 +34,8 @@ for d in "$runs"/paper-*/; do
     awk 'FNR == 1 { first = -1 } !/^#/ && NF >= 5 { if (first < 0) { first = $1; if ($1 in t) next }
          t[$1] = $2; fx[$1] = $3 } END { for (s in t) print t[s], fx[s] }' $files
   else
-    awk -F, 'NR > 1 && NF >= 4 { print $1, $2 }' "$d/hull_force.csv"
-  fi | awk -v b="$bin_s" '{ k = int($1 / b + 1e-9); s[k] += -$2; n[k]++ }
-         END { for (k in s) printf "%d %.3f %d\n", k, s[k] / n[k], n[k] }' | sort -n > "$tmp/$name"
+    csv_rows "$d/hull_force.csv"
+  fi | bin_rows > "$tmp/$name"
   cols+=("$name")
 done
 # The runs that live on elsewhere: archived by brash-study (docs/paper_runs/<name>/hull_force.csv, unless the run
@@ -38,9 +44,7 @@ done
 for d in "$here"/docs/paper_runs/paper-*/; do
   d="${d%/}"; name="$(basename "$d")"
   [ -f "$d/hull_force.csv" ] && [ ! -e "$runs/$name" ] || continue
-  awk -F, 'NR > 1 && NF >= 4 { print $1, $2 }' "$d/hull_force.csv" |
-    awk -v b="$bin_s" '{ k = int($1 / b + 1e-9); s[k] += -$2; n[k]++ }
-         END { for (k in s) printf "%d %.3f %d\n", k, s[k] / n[k], n[k] }' | sort -n > "$tmp/$name (archived)"
+  csv_rows "$d/hull_force.csv" | bin_rows > "$tmp/$name (archived)"
   cols+=("$name (archived)")
 done
 hist="$here/docs/study_figs/paper_histories.dat"
