@@ -22,22 +22,23 @@ expect '## (a) Paper comparison' '## (b) Speed sweep' '## (c) Sensitivities' '##
 test -s "$tmp/study_manifest.tsv" && test -s "$tmp/study_figs/paper_bars.png" && test -s "$tmp/study_figs/R1_force_history.png"
 if grep -q 'paper-liggghts' "$tmp/study.md"; then echo "a paper run listed with none made"; exit 1; fi
 test ! -e "$tmp/archive"
+test ! -e "$tmp/paper/cases"  # smoke mode makes no paper case folder (it never starts a paper run)
 
 # a complete run standing in for the drag paper run: listed and archived
-cp -r "$tmp/work/runs/smoke_drag" "$tmp/paper/paper-liggghts-drag"
+cp -r "$tmp/work/runs/smoke_drag" "$tmp/paper/paper-liggghts-drag-20s"
 study
-expect '/paper/paper-liggghts-drag` | smoke_base | liggghts | drag |'
+expect '/paper/paper-liggghts-drag-20s` | smoke_base | liggghts | drag |'
 for f in meta.json case.yaml report.json report.md hull_force.csv force_history.png; do
-  test -s "$tmp/archive/paper-liggghts-drag/$f" || { echo "not archived: $f"; exit 1; }
+  test -s "$tmp/archive/paper-liggghts-drag-20s/$f" || { echo "not archived: $f"; exit 1; }
 done
-ls "$tmp/archive/paper-liggghts-drag"/ice_views_*.png > /dev/null
-cmp "$tmp/paper/paper-liggghts-drag/report.json" "$tmp/archive/paper-liggghts-drag/report.json"
+ls "$tmp/archive/paper-liggghts-drag-20s"/ice_views_*.png > /dev/null
+cmp "$tmp/paper/paper-liggghts-drag-20s/report.json" "$tmp/archive/paper-liggghts-drag-20s/report.json"
 
 # its run directory gone (a new machine): listed from the archive, not run again
-rm -rf "$tmp/paper/paper-liggghts-drag"
+rm -rf "$tmp/paper/paper-liggghts-drag-20s"
 study
-expect '/archive/paper-liggghts-drag` | smoke_base | liggghts | drag |'
-test ! -e "$tmp/paper/paper-liggghts-drag"
+expect '/archive/paper-liggghts-drag-20s` | smoke_base | liggghts | drag |'
+test ! -e "$tmp/paper/paper-liggghts-drag-20s"
 # a paired ensemble's summary: listed, archived, and listed from the archive once its folder is gone
 qs="1:contact.youngs_modulus_pa=3.125e5,run.timestep_s=8.0e-4"
 mkdir -p "$tmp/paper/fluid-reading"
@@ -53,7 +54,10 @@ study
 expect '| P1 |' '+22.2 % ± 1.2 %' 'archive/ensembles/fluid-reading/ensemble-smoke.json'
 
 # a run still in progress (no complete report) is not archived
-mkdir -p "$tmp/paper/paper-liggghts-both" && cp "$tmp/work/runs/smoke_am/meta.json" "$tmp/paper/paper-liggghts-both/"
+# (listed as in progress, with the model time its record has reached; the stand-in's meta.json is smoke_am's)
+mkdir -p "$tmp/paper/paper-liggghts-both-20s" && cp "$tmp/work/runs/smoke_am/meta.json" "$tmp/paper/paper-liggghts-both-20s/"
 study
-test ! -e "$tmp/archive/paper-liggghts-both"
+test ! -e "$tmp/archive/paper-liggghts-both-20s"
+expect '/paper/paper-liggghts-both-20s` | ? | liggghts | added_mass | **IN PROGRESS**'
+test ! -e "$tmp/paper/cases"
 cat "$tmp/study.md"
