@@ -398,6 +398,15 @@ std::string show_path(const fs::path& p) {
   return p.string();
 }
 
+// The full run directory of a folder that holds a copy of a run's outputs (brash-study writes its path,
+// relative to the repository, to source_run_dir.txt in the copy); empty for a run directory itself.
+fs::path source_run_dir(const fs::path& run_dir) {
+  std::ifstream in(run_dir / "source_run_dir.txt");
+  std::string line;
+  if (!in || !std::getline(in, line) || line.empty()) return {};
+  return fs::path(line);
+}
+
 std::string md_escape(std::string s) {
   std::string o;
   for (char c : s) {
@@ -979,9 +988,18 @@ void section_figures(Study& s, std::string& md, const fs::path& fig_dir, const f
                         "the last dump (from `{}`).",
                         r->ref, link(f), show_path(views));
     }
-    if (fs::exists(r->run_dir / "particles.pvd"))
+    if (fs::exists(r->run_dir / "particles.pvd")) {
       md += fmt::format(" ParaView: open `{}` and `{}`.", show_path(r->run_dir / "particles.pvd"),
                         show_path(r->run_dir / "hull.pvd"));
+    } else if (const fs::path full = source_run_dir(r->run_dir); !full.empty()) {
+      // a copy of the run's outputs (brash-study): the ParaView files stay in the full run directory
+      md += fs::exists(full / "particles.pvd")
+                ? fmt::format(" ParaView: open `{}` and `{}`.", show_path(full / "particles.pvd"),
+                              show_path(full / "hull.pvd"))
+                : fmt::format(
+                      " ParaView files: `particles.pvd` and `hull.pvd` in `{}`, on the machine that ran it.",
+                      show_path(full));
+    }
     md += "\n\n";
   }
 }
@@ -1189,8 +1207,19 @@ void section_engines(Study& s, std::string& md) {
 }
 
 void section_runs(Study& s, std::string& md) {
-  md += "## (e) Runs and the commands that produced them\n\n"
-        "| run | run dir | case | engine | fluid model | status | command |\n|---|---|---|---|---|---|---|\n";
+  md +=
+      "## (e) Runs and the commands that produced them\n\n"
+      "\"report files\": the folder holding the run's report.json and report.md, its force history, "
+      "case.yaml and "
+      "meta.json, from which this document was generated. For a complete run made by a study it is the copy "
+      "kept "
+      "in the repository (the study's own runs beside this document, the paper runs and the ensembles' "
+      "summaries "
+      "in docs/paper_runs); the command's `--out` folder, with the dumps and restarts, lives on the machine "
+      "that "
+      "ran it.\n\n"
+      "| run | report files | case | engine | fluid model | status | command "
+      "|\n|---|---|---|---|---|---|---|\n";
   for (const auto& k : s.order) {
     const Run& r = s.runs.at(k);
     md += fmt::format("| {} | `{}` | {} | {} | {} | {} | `{}` |\n", r.ref, show_path(r.run_dir), r.case_name, r.engine,

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # scripts/brash-study STUDY=smoke end to end into a temp dir (docs/study.md and docs/paper_runs are not touched),
-# then the paper-run archive: a complete run in the paper dir is archived, and listed from its archive once its
-# run directory is gone.
+# then the archives: the study's runs copied beside the document, a complete run in the paper dir archived, each
+# listed from its copy (also once its run directory is gone).
 #   bash study_smoke.sh REPO BIN_DIR TMP_DIR
 set -euo pipefail
 repo="$1" bin="$2" tmp="$3"
@@ -23,11 +23,27 @@ test -s "$tmp/study_manifest.tsv" && test -s "$tmp/study_figs/paper_bars.png" &&
 if grep -q 'paper-liggghts' "$tmp/study.md"; then echo "a paper run listed with none made"; exit 1; fi
 test ! -e "$tmp/archive"
 test ! -e "$tmp/paper/cases"  # smoke mode makes no paper case folder (it never starts a paper run)
+# the study's own runs: their outputs copied beside the document (study_runs/<id>) and listed from there
+for id in smoke_am smoke_drag smoke_u0.8_am; do
+  for f in meta.json case.yaml report.json report.md hull_force.csv force_history.png; do
+    test -s "$tmp/study_runs/$id/$f" || { echo "not copied: $id/$f"; exit 1; }
+  done
+  cmp "$tmp/work/runs/$id/report.json" "$tmp/study_runs/$id/report.json"
+done
+test ! -e "$tmp/study_runs/smoke_am/restart" && test ! -e "$tmp/study_runs/smoke_am/particles"
+expect '/study_runs/smoke_am` | smoke_base | liggghts | added_mass |' '| report files |'
+# the ParaView files are named in the full run directory the copy came from
+expect '/work/runs/smoke_am/particles.pvd` and `'
+if grep -qF '/work/runs/smoke_am`' "$tmp/study.md"; then echo "a run listed from the work dir"; exit 1; fi
+grep -qF 'study_runs/smoke_drag' "$tmp/study_manifest.tsv"
 
-# a complete run standing in for the drag paper run: listed and archived
+# a complete run standing in for the drag paper run: archived and listed from the archive; a copy of a run the
+# study no longer lists is dropped from study_runs
+mkdir -p "$tmp/study_runs/stale"
 cp -r "$tmp/work/runs/smoke_drag" "$tmp/paper/paper-liggghts-drag-20s"
 study
-expect '/paper/paper-liggghts-drag-20s` | smoke_base | liggghts | drag |'
+test ! -e "$tmp/study_runs/stale"
+expect '/archive/paper-liggghts-drag-20s` | smoke_base | liggghts | drag |'
 for f in meta.json case.yaml report.json report.md hull_force.csv force_history.png; do
   test -s "$tmp/archive/paper-liggghts-drag-20s/$f" || { echo "not archived: $f"; exit 1; }
 done
@@ -37,7 +53,8 @@ cmp "$tmp/paper/paper-liggghts-drag-20s/report.json" "$tmp/archive/paper-liggght
 # its run directory gone (a new machine): listed from the archive, not run again
 rm -rf "$tmp/paper/paper-liggghts-drag-20s"
 study
-expect '/archive/paper-liggghts-drag-20s` | smoke_base | liggghts | drag |'
+expect '/archive/paper-liggghts-drag-20s` | smoke_base | liggghts | drag |' \
+  '/paper/paper-liggghts-drag-20s`, on the machine that ran it.'
 test ! -e "$tmp/paper/paper-liggghts-drag-20s"
 # a paired ensemble's summary: listed, archived, and listed from the archive once its folder is gone
 qs="1:contact.youngs_modulus_pa=3.125e5,run.timestep_s=8.0e-4"
@@ -47,7 +64,7 @@ cat > "$tmp/paper/fluid-reading/ensemble-smoke.json" <<JSON
   "mean_a_N": 10.0, "mean_b_N": 12.5, "diff_rel": 0.2222, "ci95_rel": 0.0123 }
 JSON
 study
-expect '| P1 |' 'drag on added_mass' '+22.2 % ± 1.2 %' 'paper/fluid-reading/ensemble-smoke.json'
+expect '| P1 |' 'drag on added_mass' '+22.2 % ± 1.2 %' 'archive/ensembles/fluid-reading/ensemble-smoke.json'
 cmp "$tmp/paper/fluid-reading/ensemble-smoke.json" "$tmp/archive/ensembles/fluid-reading/ensemble-smoke.json"
 rm -rf "$tmp/paper/fluid-reading"
 study
