@@ -39,20 +39,21 @@ for d in "$runs"/paper-*/; do
   cols+=("$name")
 done
 # The runs that live on elsewhere: archived by brash-study (docs/paper_runs/<name>/hull_force.csv, unless the run
-# directory is here) and the paper runs of the committed study document (docs/study_figs/paper_histories.dat:
-# 0.5 s bins of the full-scale resistance in kN, back to model scale N; only when BIN_S is a multiple of 0.5 s).
+# directory is here) and the 40 s paper runs whose directories were lost, kept as their histories
+# (docs/paper_runs/paper_histories_40s.dat: 0.5 s bins of the full-scale resistance in kN, back to model scale N;
+# only when BIN_S is a multiple of 0.5 s).
 for d in "$here"/docs/paper_runs/paper-*/; do
   d="${d%/}"; name="$(basename "$d")"
   [ -f "$d/hull_force.csv" ] && [ ! -e "$runs/$name" ] || continue
   csv_rows "$d/hull_force.csv" | bin_rows > "$tmp/$name (archived)"
   cols+=("$name (archived)")
 done
-hist="$here/docs/study_figs/paper_histories.dat"
+hist="$here/docs/paper_runs/paper_histories_40s.dat"
 per=$(awk -v b="$bin_s" 'BEGIN { m = b / 0.5; print (m >= 1 && m == int(m)) ? m : 0 }')
 if [ -f "$hist" ] && [ "$per" -gt 0 ]; then
   lambda=$(awk '/^ *scale_lambda:/ { print $2; exit }' "$here/cases/jbc_ia_5kn/case.yaml")
   while IFS= read -r label; do
-    name="${label#\# } (study doc)"
+    name="${label#\# } (history)"
     # rows of this block: "t_mid kN"; the kN of a 0.5 s bin -> model N, averaged over BIN_S / 0.5 bins
     awk -v L="$label" -v b="$bin_s" -v lam="$lambda" -v per="$per" '
       $0 == L { on = 1; next } /^#/ { on = 0 } on && NF == 2 {
@@ -60,7 +61,7 @@ if [ -f "$hist" ] && [ "$per" -gt 0 ]; then
       END { for (k in s) printf "%d %.3f %d\n", k, s[k] / n[k], (n[k] == per ? b / 0.01 : n[k] * 50) }' "$hist" |
       sort -n > "$tmp/$name"
     [ -s "$tmp/$name" ] && cols+=("$name")
-  done < <(grep '^# R[0-9]' "$hist")
+  done < <(grep '^# paper-' "$hist")
 fi
 # (part of make bench: without a paper-case run there is nothing to show, which is not a failure)
 [ ${#cols[@]} -gt 0 ] || { echo "paper_progress: no $runs/paper-* directory with a force record: skipped"; exit 0; }

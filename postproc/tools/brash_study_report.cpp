@@ -126,7 +126,9 @@ std::vector<Row> read_manifest(const fs::path& path) {
     if (r.group.empty()) throw std::runtime_error(fmt::format("{}:{}: empty group", path.string(), lineno));
     if (!m["run_dir"].empty()) {
       fs::path d = m["run_dir"];
-      r.run_dir = d.is_absolute() ? d : base / d;
+      // lexically: brash-study writes logical paths (realpath -s), which may pass through a symlinked folder
+      // (runs/ -> elsewhere), where the file system's ".." would climb from the link's target instead
+      r.run_dir = (d.is_absolute() ? d : base / d).lexically_normal();
     }
     rows.push_back(r);
   }
@@ -961,7 +963,12 @@ void section_figures(Study& s, std::string& md, const fs::path& fig_dir, const f
   std::set<std::string> engines_with_views;
   for (const Run* r : runs) {
     md += fmt::format("**{}** ({} {}, {}):", r->ref, r->engine, r->model, scale_label(*r));
-    const fs::path fh = r->run_dir / "force_history.png";
+    // the plots are in the run directory, or (a copy without its plots, brash-study's study_runs) in the full run
+    // directory the copy came from
+    const fs::path full_dir = source_run_dir(r->run_dir);
+    const fs::path plot_dir =
+        fs::exists(r->run_dir / "force_history.png") || full_dir.empty() ? r->run_dir : full_dir;
+    const fs::path fh = plot_dir / "force_history.png";
     if (fs::exists(fh)) {
       const std::string f = r->ref + "_force_history.png";
       fs::copy_file(fh, fig_dir / f, fs::copy_options::overwrite_existing);
@@ -974,8 +981,8 @@ void section_figures(Study& s, std::string& md, const fs::path& fig_dir, const f
     fs::path views;
     // views for the first run of each engine, and for every paper-case run (the study's headline runs)
     const bool want_views = !engines_with_views.count(r->engine) || r->base_case == "jbc_ia_5kn";
-    if (want_views && fs::is_directory(r->run_dir))
-      for (const auto& e : fs::directory_iterator(r->run_dir)) {
+    if (want_views && fs::is_directory(plot_dir))
+      for (const auto& e : fs::directory_iterator(plot_dir)) {
         const std::string n = e.path().filename().string();
         if (n.rfind("ice_views_", 0) == 0 && e.path().extension() == ".png" && (views.empty() || e.path() > views))
           views = e.path();
@@ -991,7 +998,7 @@ void section_figures(Study& s, std::string& md, const fs::path& fig_dir, const f
     if (fs::exists(r->run_dir / "particles.pvd")) {
       md += fmt::format(" ParaView: open `{}` and `{}`.", show_path(r->run_dir / "particles.pvd"),
                         show_path(r->run_dir / "hull.pvd"));
-    } else if (const fs::path full = source_run_dir(r->run_dir); !full.empty()) {
+    } else if (const fs::path& full = full_dir; !full.empty()) {
       // a copy of the run's outputs (brash-study): the ParaView files stay in the full run directory
       md += fs::exists(full / "particles.pvd")
                 ? fmt::format(" ParaView: open `{}` and `{}`.", show_path(full / "particles.pvd"),

@@ -5,7 +5,10 @@
 #   bash study_smoke.sh REPO BIN_DIR TMP_DIR
 set -euo pipefail
 repo="$1" bin="$2" tmp="$3"
-rm -rf "$tmp" && mkdir -p "$tmp/paper"
+rm -rf "$tmp" && mkdir -p "$tmp/paper" "$tmp/elsewhere/deeper/work"
+# the work dir is a symlink to a folder at another depth (as runs/ is on our machines): the manifest's paths
+# relative to it must still name the copies beside the document
+ln -s "$tmp/elsewhere/deeper/work" "$tmp/work"
 study() {
   STUDY=smoke BRASH_BIN="$bin" STUDY_WORK="$tmp/work" STUDY_DOC="$tmp/study.md" STUDY_PAPER_DIR="$tmp/paper" \
     STUDY_ARCHIVE="$tmp/archive" "$repo/scripts/brash-study"
@@ -18,22 +21,24 @@ study
 expect '## (a) Paper comparison' '## (b) Speed sweep' '## (c) Sensitivities' '## (d) Engines' \
   '## (e) Runs and the commands' 'reduced case' '| liggghts | added_mass | 2 |' 'brash-liggghts-run' \
   '![full-scale resistance vs the paper](study_figs/paper_bars.png)' '![R1 force history](study_figs/R1_force_history.png)' \
-  'Fig. 4 analog'
+  'Fig. 4 analog' 'None: every run listed in the manifest has a complete report.json.'
 test -s "$tmp/study_manifest.tsv" && test -s "$tmp/study_figs/paper_bars.png" && test -s "$tmp/study_figs/R1_force_history.png"
 if grep -q 'paper-liggghts' "$tmp/study.md"; then echo "a paper run listed with none made"; exit 1; fi
 test ! -e "$tmp/archive"
 test ! -e "$tmp/paper/cases"  # smoke mode makes no paper case folder (it never starts a paper run)
 # the study's own runs: their outputs copied beside the document (study_runs/<id>) and listed from there
 for id in smoke_am smoke_drag smoke_u0.8_am; do
-  for f in meta.json case.yaml report.json report.md hull_force.csv force_history.png; do
+  for f in meta.json case.yaml report.json report.md hull_force.csv; do
     test -s "$tmp/study_runs/$id/$f" || { echo "not copied: $id/$f"; exit 1; }
   done
   cmp "$tmp/work/runs/$id/report.json" "$tmp/study_runs/$id/report.json"
+  # the plots stay in the run directory; the document's figures are taken from there
+  if ls "$tmp/study_runs/$id"/*.png > /dev/null 2>&1; then echo "plots copied to study_runs/$id"; exit 1; fi
 done
 test ! -e "$tmp/study_runs/smoke_am/restart" && test ! -e "$tmp/study_runs/smoke_am/particles"
 expect '/study_runs/smoke_am` | smoke_base | liggghts | added_mass |' '| report files |'
 # the ParaView files are named in the full run directory the copy came from
-expect '/work/runs/smoke_am/particles.pvd` and `'
+expect '/work/runs/smoke_am/particles.pvd` and `' '/work/runs/smoke_am/force_history.png`)'
 if grep -qF '/work/runs/smoke_am`' "$tmp/study.md"; then echo "a run listed from the work dir"; exit 1; fi
 grep -qF 'study_runs/smoke_drag' "$tmp/study_manifest.tsv"
 
