@@ -998,14 +998,14 @@ void section_figures(Study& s, std::string& md, const fs::path& fig_dir, const f
     if (fs::exists(r->run_dir / "particles.pvd")) {
       md += fmt::format(" ParaView: open `{}` and `{}`.", show_path(r->run_dir / "particles.pvd"),
                         show_path(r->run_dir / "hull.pvd"));
-    } else if (const fs::path& full = full_dir; !full.empty()) {
+    } else if (!full_dir.empty()) {
       // a copy of the run's outputs (brash-study): the ParaView files stay in the full run directory
-      md += fs::exists(full / "particles.pvd")
-                ? fmt::format(" ParaView: open `{}` and `{}`.", show_path(full / "particles.pvd"),
-                              show_path(full / "hull.pvd"))
+      md += fs::exists(full_dir / "particles.pvd")
+                ? fmt::format(" ParaView: open `{}` and `{}`.", show_path(full_dir / "particles.pvd"),
+                              show_path(full_dir / "hull.pvd"))
                 : fmt::format(
                       " ParaView files: `particles.pvd` and `hull.pvd` in `{}`, on the machine that ran it.",
-                      show_path(full));
+                      show_path(full_dir));
     }
     md += "\n\n";
   }
@@ -1217,16 +1217,13 @@ void section_runs(Study& s, std::string& md) {
   md +=
       "## (e) Runs and the commands that produced them\n\n"
       "\"report files\": the folder holding the run's report.json and report.md, its force history, "
-      "case.yaml and "
-      "meta.json, from which this document was generated. For a complete run made by a study it is the copy "
-      "kept "
-      "in the repository (the study's own runs beside this document, the paper runs and the ensembles' "
-      "summaries "
-      "in docs/paper_runs); the command's `--out` folder, with the dumps and restarts, lives on the machine "
-      "that "
-      "ran it.\n\n"
-      "| run | report files | case | engine | fluid model | status | command "
-      "|\n|---|---|---|---|---|---|---|\n";
+      "case.yaml "
+      "and meta.json, from which this document was generated. For a complete run made by a study it is the "
+      "copy kept in the repository (the study's own runs beside this document, the paper runs and the "
+      "ensembles' summaries in docs/paper_runs); the command's `--out` folder, with the dumps and restarts, "
+      "lives on the machine that ran it.\n\n"
+      "| run | report files | case | engine | fluid model | status | command |\n"
+      "|---|---|---|---|---|---|---|\n";
   for (const auto& k : s.order) {
     const Run& r = s.runs.at(k);
     md += fmt::format("| {} | `{}` | {} | {} | {} | {} | `{}` |\n", r.ref, show_path(r.run_dir), r.case_name, r.engine,
