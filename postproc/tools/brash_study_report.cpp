@@ -401,12 +401,15 @@ std::string show_path(const fs::path& p) {
 }
 
 // The full run directory of a folder that holds a copy of a run's outputs (brash-study writes its path,
-// relative to the repository, to source_run_dir.txt in the copy); empty for a run directory itself.
+// relative to the copy itself, to source_run_dir.txt in the copy); empty for a run directory itself. Resolved
+// against the copy lexically (not through the file system: a logical path through a symlinked runs/ must not
+// climb from the link's target), so the tool finds it from any working directory.
 fs::path source_run_dir(const fs::path& run_dir) {
   std::ifstream in(run_dir / "source_run_dir.txt");
   std::string line;
   if (!in || !std::getline(in, line) || line.empty()) return {};
-  return fs::path(line);
+  const fs::path p(line);
+  return p.is_absolute() ? p : (run_dir / p).lexically_normal();
 }
 
 std::string md_escape(std::string s) {

@@ -379,6 +379,33 @@ TEST(StudyReport, Fig6BarsShowThePaperCaseAloneWhenItIsThere) {
   EXPECT_NE(read(d / "doc/study.md").find("| R1 | **reduced case**"), std::string::npos);
 }
 
+// A copy of a run's outputs without its plots (brash-study's study_runs) names its full run directory in
+// source_run_dir.txt, relative to the copy: its plots and ParaView files are found from there whatever the
+// tool's working directory (here the test's, not the study's folder).
+TEST(StudyReport, ACopyFindsItsFullRunDirectoryFromAnyWorkingDirectory) {
+  const fs::path d = fresh_dir("copy");
+  write_report(d / "work/runs/am", "liggghts", "added_mass", 0.482, 12.5, 1.5);
+  std::ofstream(d / "work/runs/am/force_history.png") << "force history of am";
+  std::ofstream(d / "work/runs/am/ice_views_001.00s.png") << "views of am";
+  std::ofstream(d / "work/runs/am/particles.pvd") << "<VTKFile/>";
+  fs::create_directories(d / "doc/study_runs/am");
+  fs::copy_file(d / "work/runs/am/report.json", d / "doc/study_runs/am/report.json");
+  std::ofstream(d / "doc/study_runs/am/source_run_dir.txt") << "../../../work/runs/am\n";
+  ASSERT_NE(fs::current_path().lexically_normal(), d.lexically_normal());
+  std::string m = kHeader;
+  m += "p1\tpaper\tam\t\t\t1\tjbc_bench\t0\t../doc/study_runs/am\tbrash-liggghts-run am\n";
+  std::ofstream(d / "work/manifest.tsv") << m;
+  ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --plot none", (d / "work/manifest.tsv").string(),
+                                    (d / "doc/study.md").string())),
+            0)
+      << read(d / "tool.log");
+  EXPECT_EQ(read(d / "doc/study_figs/R1_force_history.png"), "force history of am");
+  EXPECT_EQ(read(d / "doc/study_figs/R1_ice_views.png"), "views of am");
+  const std::string md = read(d / "doc/study.md");
+  EXPECT_NE(md.find("work/runs/am/particles.pvd` and `"), std::string::npos) << md;
+  EXPECT_EQ(md.find("no force_history.png in"), std::string::npos) << md;
+}
+
 // The paper case's histories in one plot: every paper-case run with a force record, runs still going too (up
 // to their last complete row), 0.5 s bin means at full scale; a stretch without rows breaks the line without
 // starting a new gnuplot data set (two blank lines would, and shift every later run's title).
