@@ -81,6 +81,13 @@ std::vector<std::string> split_tabs(const std::string& line) {
   return out;
 }
 
+// P (absolute, or relative to BASE) joined lexically: brash-study writes logical paths (realpath -s), which may
+// pass through a symlinked folder (runs/ -> elsewhere), where the file system's ".." would climb from the link's
+// target instead.
+fs::path join_logical(const fs::path& base, const fs::path& p) {
+  return (p.is_absolute() ? p : base / p).lexically_normal();
+}
+
 std::vector<Row> read_manifest(const fs::path& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error(fmt::format("{}: cannot open the manifest", path.string()));
@@ -126,9 +133,7 @@ std::vector<Row> read_manifest(const fs::path& path) {
     if (r.group.empty()) throw std::runtime_error(fmt::format("{}:{}: empty group", path.string(), lineno));
     if (!m["run_dir"].empty()) {
       fs::path d = m["run_dir"];
-      // lexically: brash-study writes logical paths (realpath -s), which may pass through a symlinked folder
-      // (runs/ -> elsewhere), where the file system's ".." would climb from the link's target instead
-      r.run_dir = (d.is_absolute() ? d : base / d).lexically_normal();
+      r.run_dir = join_logical(base, d);
     }
     rows.push_back(r);
   }
@@ -402,14 +407,12 @@ std::string show_path(const fs::path& p) {
 
 // The full run directory of a folder that holds a copy of a run's outputs (brash-study writes its path,
 // relative to the copy itself, to source_run_dir.txt in the copy); empty for a run directory itself. Resolved
-// against the copy lexically (not through the file system: a logical path through a symlinked runs/ must not
-// climb from the link's target), so the tool finds it from any working directory.
+// against the copy, so the tool finds it from any working directory.
 fs::path source_run_dir(const fs::path& run_dir) {
   std::ifstream in(run_dir / "source_run_dir.txt");
   std::string line;
   if (!in || !std::getline(in, line) || line.empty()) return {};
-  const fs::path p(line);
-  return p.is_absolute() ? p : (run_dir / p).lexically_normal();
+  return join_logical(run_dir, line);
 }
 
 std::string md_escape(std::string s) {
