@@ -1204,17 +1204,36 @@ void section_engines(Study& s, std::string& md) {
   std::sort(runs.begin(), runs.end(), [](const Run* a, const Run* b) {
     return std::tie(a->base_case, a->model, a->engine) < std::tie(b->base_case, b->model, b->engine);
   });
-  md += "| run | case | fluid model | engine | R model [N] ± CI95 | R full [kN] ± CI95 | wall time [s] | particle-steps/s | status |\n"
-        "|---|---|---|---|---|---|---|---|---|\n";
+  // Each other engine's run against the LIGGGHTS run of the same case and fluid model (the main engine; the
+  // first one listed when there are several): R / R_liggghts - 1, its CI from the two runs' relative CIs in
+  // quadrature (independent runs).
+  std::map<std::pair<std::string, std::string>, const Run*> liggghts_of;
+  for (const Run* r : runs)
+    if (r->ok && r->engine == "liggghts") liggghts_of.emplace(std::pair{r->base_case, r->model}, r);
+  auto vs_liggghts = [&](const Run& r) -> std::string {
+    if (r.engine == "liggghts") return "reference";
+    const auto it = liggghts_of.find({r.base_case, r.model});
+    if (it == liggghts_of.end() || it->second->mean_N == 0.0 || r.mean_N == 0.0) return "—";
+    const Run& l = *it->second;
+    const double ratio = r.mean_N / l.mean_N;
+    const double rel_ci = std::hypot(r.ci_N / r.mean_N, l.ci_N / l.mean_N);
+    return fmt::format("{:+.1f} % ± {:.1f} % ({})", 100.0 * (ratio - 1.0), 100.0 * std::abs(ratio) * rel_ci,
+                       l.ref);
+  };
+  md +=
+      "| run | case | fluid model | engine | R model [N] ± CI95 | R full [kN] ± CI95 | vs LIGGGHTS ± CI95 | "
+      "wall time [s] | particle-steps/s | status |\n"
+      "|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Run* r : runs) {
     if (!r->ok) {
-      md += fmt::format("| {} | {} | {} | {} | — | — | — | — | {} |\n", r->ref, r->base_case, r->model, r->engine,
-                        status_cell(*r));
+      md += fmt::format("| {} | {} | {} | {} | — | — | — | — | — | {} |\n", r->ref, r->base_case, r->model,
+                        r->engine, status_cell(*r));
       continue;
     }
-    md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", r->ref, r->base_case, r->model, r->engine,
-                      pm(r->mean_N, r->ci_N), pm(r->full_kN, r->full_ci_kN, 1), num(r->wall_s, 0),
-                      r->wall_s > 0 ? fmt::format("{:.3g}", r->psteps / r->wall_s) : "n/a", status_cell(*r));
+    md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", r->ref, r->base_case, r->model,
+                      r->engine, pm(r->mean_N, r->ci_N), pm(r->full_kN, r->full_ci_kN, 1), vs_liggghts(*r),
+                      num(r->wall_s, 0), r->wall_s > 0 ? fmt::format("{:.3g}", r->psteps / r->wall_s) : "n/a",
+                      status_cell(*r));
   }
   md += "\n";
 }

@@ -141,6 +141,10 @@ TEST(StudyReport, TablesCarryValuesAndFailuresAreReported) {
   // (d) engine table with both engines.
   EXPECT_NE(md.find("## (d) Engines"), std::string::npos);
   EXPECT_NE(md.find("14.25 ± 2.00"), std::string::npos);
+  // ODE against the LIGGGHTS run of the same case and model: 14.25 / 12.5 = +14.0 %, CI 1.14 x hypot(2
+  // / 14.25, 1.5 / 12.5) = 21.1 %
+  EXPECT_NE(md.find("| +14.0 % ± 21.1 % (R1) |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| reference |"), std::string::npos);
   // failures: status failed, missing report, runner exit code; all listed.
   EXPECT_NE(md.find("run status 'failed'"), std::string::npos);
   EXPECT_NE(md.find("no report.json"), std::string::npos);
