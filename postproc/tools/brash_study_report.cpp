@@ -433,9 +433,11 @@ void section_failures(const Study& s, std::string& md) {
     else if (!r.ok) bad.push_back(&r);
   }
   if (!running.empty()) {
-    md += fmt::format("## Runs in progress\n\n{} run(s) are still running (resumed in pieces); their rows below have no "
-                      "result yet.\n\n| run | run dir | state |\n|---|---|---|\n",
-                      running.size());
+    md += fmt::format(
+        "## Runs in progress\n\n{} run(s) have no result yet: still running (resumed in pieces), or "
+        "stopped part-way with the machine that ran them (the state says which, and how far each got); "
+        "their rows below have no result.\n\n| run | run dir | state |\n|---|---|---|\n",
+        running.size());
     for (const Run* r : running)
       md += fmt::format("| {} | `{}` | {} |\n", r->ref, show_path(r->run_dir), md_escape(r->problem));
     md += "\n";
@@ -1182,6 +1184,65 @@ void section_paired(const Study& s, std::string& md) {
   md += "\n";
 }
 
+// Mean resistance (-fx, model scale) in the whole bins [k w, (k + 1) w) that `h` covers up to `t_end_s`.
+std::vector<double> bin_means(const brash::post::ForceHistory& h, double w_s, double t_end_s) {
+  const auto nbins = static_cast<std::size_t>(std::floor(t_end_s / w_s + 1e-9));
+  std::vector<double> sum(nbins, 0.0);
+  std::vector<int> n(nbins, 0);
+  for (std::size_t i = 0; i < h.t_s.size(); ++i) {
+    // a row is stamped at the end of its output interval: it belongs to the bin its interval lies in
+    const double t_mid = h.t_s[i] - 1e-9;
+    const auto b = static_cast<std::size_t>(std::max(0.0, std::floor(t_mid / w_s)));
+    if (b >= nbins) continue;
+    sum[b] -= h.fx_N[i];
+    ++n[b];
+  }
+  std::vector<double> out(nbins, NAN);
+  for (std::size_t b = 0; b < nbins; ++b)
+    if (n[b]) out[b] = sum[b] / n[b];
+  return out;
+}
+
+// An unfinished run of another engine (the ODE paper runs outlast a session's machine) beside the complete
+// LIGGGHTS run of the same case and fluid model, in 1 s bins over the model time it has reached: the engine
+// comparison on the scene itself for as far as it goes (the bow entering the ice, not the window).
+void section_engines_so_far(const std::vector<const Run*>& runs, std::string& md) {
+  for (const Run* r : runs) {
+    if (!r->in_progress || r->engine == "liggghts" || !fs::exists(r->run_dir / "hull_force.csv")) continue;
+    const auto lit = std::find_if(runs.begin(), runs.end(), [&](const Run* l) {
+      return l->ok && l->engine == "liggghts" && l->base_case == r->base_case && l->model == r->model &&
+             fs::exists(l->run_dir / "hull_force.csv");
+    });
+    if (lit == runs.end()) continue;
+    const Run& l = **lit;
+    try {
+      const auto h = brash::post::read_force_history(r->run_dir / "hull_force.csv", true);
+      const auto hl = brash::post::read_force_history(l.run_dir / "hull_force.csv", false);
+      if (h.t_s.empty() || hl.t_s.empty()) continue;
+      const double t_end = std::min(h.t_s.back(), hl.t_s.back());
+      const double kBin_s =
+          t_end >= 2.0 ? 1.0 : 0.1;  // whole seconds; tenths for a record that is still short
+      const auto mine = bin_means(h, kBin_s, t_end), ref = bin_means(hl, kBin_s, t_end);
+      if (mine.empty()) continue;
+      md += fmt::format(
+          "{} ({} {}, {}) has reached t = {:.2f} s; beside {} (liggghts {}), in {} s bins of the "
+          "model-scale resistance (-fx):\n\n| t [s] | {} liggghts [N] | {} {} [N] | {} / {} - 1 |\n"
+          "|---|---|---|---|\n",
+          r->ref, r->engine, r->model, r->base_case, h.t_s.back(), l.ref, l.model, kBin_s, l.ref, r->ref,
+          r->engine, r->ref, l.ref);
+      for (std::size_t b = 0; b < mine.size(); ++b) {
+        const bool both = std::isfinite(mine[b]) && std::isfinite(ref[b]) && ref[b] != 0.0;
+        md += fmt::format("| {:g}-{:g} | {} | {} | {} |\n", b * kBin_s, (b + 1) * kBin_s, num(ref[b], 3),
+                          num(mine[b], 3),
+                          both ? fmt::format("{:+.1f} %", 100.0 * (mine[b] / ref[b] - 1.0)) : "—");
+      }
+      md += "\n";
+    } catch (const std::exception& e) {
+      md += fmt::format("(the record of {} or {} is not readable: {})\n\n", r->ref, l.ref, e.what());
+    }
+  }
+}
+
 void section_engines(Study& s, std::string& md) {
   md += "## (d) Engines\n\n";
   std::vector<const Run*> runs;
@@ -1236,6 +1297,7 @@ void section_engines(Study& s, std::string& md) {
                       status_cell(*r));
   }
   md += "\n";
+  section_engines_so_far(runs, md);
 }
 
 void section_runs(Study& s, std::string& md) {

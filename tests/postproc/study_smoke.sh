@@ -82,4 +82,31 @@ study
 test ! -e "$tmp/archive/paper-liggghts-both-20s"
 expect '/paper/paper-liggghts-both-20s` | ? | liggghts | added_mass | **IN PROGRESS**'
 test ! -e "$tmp/paper/cases"
+
+# an ODE paper run (they outlast a session's machine) with a partial record: the record so far is archived
+# (complete rows only), the run is listed with its bins beside the LIGGGHTS run of the same fluid model (here a
+# stand-in at 1.1x the drag stand-in's force), and once its directory is gone it is listed from the archive as
+# stopped part-way
+o="$tmp/paper/paper-ode-drag-20s"
+mkdir -p "$o"
+sed 's/"engine": "liggghts"/"engine": "ode"/' "$tmp/work/runs/smoke_drag/meta.json" > "$o/meta.json"
+cp "$tmp/work/runs/smoke_drag/case.yaml" "$o/"
+awk -F, 'NR == 1 { print; next } { printf "%s,%.9g,%s,%s\n", $1, 1.1 * $2, $3, $4 }' \
+  "$tmp/archive/paper-liggghts-drag-20s/hull_force.csv" > "$o/hull_force.csv"
+printf '9.99,-1.0,0.0,0.' >> "$o/hull_force.csv"  # a row still being written
+study
+test -s "$tmp/archive/paper-ode-drag-20s/hull_force.csv" && test -s "$tmp/archive/paper-ode-drag-20s/meta.json"
+if grep -q '^9.99' "$tmp/archive/paper-ode-drag-20s/hull_force.csv"; then echo "unterminated row archived"; exit 1; fi
+expect '/paper/paper-ode-drag-20s` | ? | ode | drag | **IN PROGRESS** (in progress: model time 0.30 s of' \
+  'ode [N] |' '| 0.2-0.3 |' '+10.0 %'
+rm -rf "$o"
+study
+expect '/archive/paper-ode-drag-20s` | ? | ode | drag | **IN PROGRESS** (in progress, stopped: model time 0.30 s of' \
+  'ode [N] |' '+10.0 %'
+test ! -e "$o"
+# a shorter record of the same run (started again elsewhere) does not replace the longer archived one
+mkdir -p "$o" && cp "$tmp/archive/paper-ode-drag-20s/meta.json" "$tmp/archive/paper-ode-drag-20s/case.yaml" "$o/"
+head -n 5 "$tmp/archive/paper-ode-drag-20s/hull_force.csv" > "$o/hull_force.csv"
+study
+test "$(wc -l < "$tmp/archive/paper-ode-drag-20s/hull_force.csv")" -gt 5
 cat "$tmp/study.md"
