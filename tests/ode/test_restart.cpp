@@ -119,6 +119,26 @@ TEST_F(Restart, StopAfterStepThenResumeReproducesTheUninterruptedRun) {
   EXPECT_EQ(run(resume_cmd(b)), 0);
 }
 
+// SIGTERM (or Ctrl-C) is a handled stop: the step in progress ends, then the run is left resumable at that
+// very step (hull_force.csv rows up to it, a restart file of it, meta status "stopped"), exit 143 (128 +
+// SIGTERM). The resume goes on from there and reproduces the uninterrupted run.
+TEST_F(Restart, SigtermStopsAtTheStepAndResumesFromIt) {
+  const fs::path s = kRoot / "S";
+  ASSERT_EQ(run(base_cmd(s) + " --stop-after-step 230 > /dev/null"), 143);
+  const std::string meta = slurp(s / "meta.json");
+  EXPECT_NE(meta.find("\"status\": \"stopped\""), std::string::npos) << meta;
+  EXPECT_NE(meta.find("stopped by signal SIGTERM at step 230"), std::string::npos) << meta;
+  EXPECT_NE(meta.find("\"steps_done\": 230"), std::string::npos) << meta;
+  EXPECT_TRUE(fs::exists(s / "restart" / "restart_0000000230.bin"));  // not only the periodic 160
+  EXPECT_EQ(read_csv(s / "hull_force.csv").size(),
+            11u);  // the 0.01 s rows to 0.11 s (the rest: in the restart)
+  ASSERT_EQ(run(resume_cmd(s)), 0);
+  const std::string resumed = slurp(s / "meta.json");
+  EXPECT_NE(resumed.find("restart_0000000230.bin"), std::string::npos) << resumed;
+  EXPECT_NE(resumed.find("\"hull_force_rows_dropped\": 0"), std::string::npos) << resumed;
+  expect_same_as_a(s, "SIGTERM during step 230, resume from 230");
+}
+
 TEST_F(Restart, RealKill9ThenResume) {
   const fs::path c = kRoot / "C";
   const std::string cmd = base_cmd(c) + " > /dev/null 2>&1 & pid=$!; i=0; while [ $i -lt 2000 ] && ! ls '" +

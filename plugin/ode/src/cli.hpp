@@ -52,6 +52,8 @@ inline void add_run_options(CLI::App& app, RunOptions& o, std::string& implicit_
       ->capture_default_str();
   // Testing only: exit like a kill -9 (no cleanup, no final outputs) right after this step.
   app.add_option("--crash-after-step", o.crash_after_step)->group("");
+  // Testing only: a SIGTERM arriving during this step (the handled stop: resumable at this step).
+  app.add_option("--stop-after-step", o.stop_after_step)->group("");
 }
 
 inline ImplicitMode parse_implicit_mode(const std::string& s) {

@@ -1,6 +1,7 @@
 // brash-ode: the standalone ODE simulator.
 //   brash-ode CASE_DIR [--out RUN_DIR] [--duration S] [...]   run a case into the common run layout
 //   brash-ode --resume RUN_DIR                               continue a killed run from its restart files
+// SIGINT / SIGTERM stop a run after the step in progress, resumable there (exit 130 / 143).
 //   brash-ode --single rise|float|heave|all [--dt S]         single-sphere scenes vs the reference integrator
 #include <fmt/format.h>
 
@@ -42,7 +43,7 @@ int main(int argc, char** argv) {
       o.resume = true;
       const auto r = brash::ode::run_case(o);
       std::cout << r.run_dir.string() << "\n";
-      return 0;
+      return r.stopped_by_signal ? 128 + r.stopped_by_signal : 0;
     }
     if (o.case_dir.empty()) {
       fmt::print(stderr, "brash-ode: error: give a CASE_DIR (or --single SCENE)\n{}", app.help());
@@ -50,6 +51,8 @@ int main(int argc, char** argv) {
     }
     const auto r = brash::ode::run_case(o);
     std::cout << r.run_dir.string() << "\n";
+    // stopped by SIGINT / SIGTERM: resumable, but not complete (the shell's convention for a signal's end)
+    if (r.stopped_by_signal) return 128 + r.stopped_by_signal;
   } catch (const brash::InputError& e) {
     fmt::print(stderr, "brash-ode: input error: {}\n", e.what());
     return 2;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -30,6 +31,37 @@ namespace brash::ode {
 namespace fs = std::filesystem;
 
 namespace {
+
+// SIGINT / SIGTERM during the time-stepping loop: the loop ends after the step in progress and the run is
+// left resumable at that step (restart file, hull_force.csv, meta status "stopped"), instead of losing the
+// work since the last periodic restart file. The handler only records the signal.
+volatile std::sig_atomic_t g_stop_signal = 0;
+extern "C" void record_stop_signal(int sig) {
+  g_stop_signal = sig;
+}
+// Installs the handlers for its lifetime and puts the previous ones back.
+class StopSignals {
+ public:
+  StopSignals() {
+    g_stop_signal = 0;
+    struct sigaction sa {};
+    sa.sa_handler = record_stop_signal;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &old_int_);
+    sigaction(SIGTERM, &sa, &old_term_);
+  }
+  ~StopSignals() {
+    sigaction(SIGINT, &old_int_, nullptr);
+    sigaction(SIGTERM, &old_term_, nullptr);
+  }
+  StopSignals(const StopSignals&) = delete;
+  StopSignals& operator=(const StopSignals&) = delete;
+  int received() const { return g_stop_signal; }
+
+ private:
+  struct sigaction old_int_ {
+  }, old_term_{};
+};
 
 // A run-time guard stopped the run (guard::stop_message).
 class GuardStop : public std::runtime_error {
@@ -222,6 +254,7 @@ RunOptions options_from_meta(const fs::path& run_dir, const RunOptions& cli) {
   o.resume = true;
   o.progress = cli.progress;
   o.crash_after_step = cli.crash_after_step;
+  o.stop_after_step = cli.stop_after_step;
   return o;
 }
 
@@ -545,6 +578,8 @@ RunResult run_case(const RunOptions& cli_options) {
     const auto loop0 = clock::now();
     const long ps_loop0 = w.stats().particle_steps;
     auto last_print = loop0;
+    const StopSignals stop_signals;
+    int stop_signal = 0;
     for (long k = k0 + 1; k <= steps; ++k) {
       w.step();
       if (k % c.guards.every_steps == 0 || k == steps) check_guards(k);
@@ -586,6 +621,12 @@ RunResult run_case(const RunOptions& cli_options) {
         save_restart(k, wall_before + std::chrono::duration<double>(now - t_start).count());
       }
       if (k == o.crash_after_step) std::_Exit(137);
+      if (o.stop_after_step == k) std::raise(SIGTERM);  // testing: a stop request arriving during step k
+      if (stop_signals.received() != 0 && k < steps) {
+        stop_signal = stop_signals.received();
+        k_end = k;
+        break;
+      }
       if (o.progress && (std::chrono::duration<double>(now - last_print).count() > 1.0 || k == steps)) {
         last_print = now;
         const double el = std::chrono::duration<double>(now - loop0).count();
@@ -599,6 +640,26 @@ RunResult run_case(const RunOptions& cli_options) {
       }
     }
     if (o.progress && tty) fmt::print(stderr, "\n");
+    if (stop_signal != 0) {
+      // Resumable where it stopped: the rows so far, then the restart file of this step (a resume drops rows
+      // after its restart time, so the order matters as for the periodic files).
+      const double wall = std::chrono::duration<double>(clock::now() - t_start).count();
+      const double t_stop = double(k_end) * st.dt_s;
+      meta["status"] = "stopped";
+      meta["reason"] =
+          fmt::format("stopped by signal {} at step {} (t = {:.4f} s); resume with brash-ode --resume {}",
+                      stop_signal == SIGINT ? "SIGINT" : "SIGTERM", k_end, t_stop, run_dir.string());
+      logln(meta["reason"].get<std::string>());
+      flush(k_end, wall);
+      save_restart(k_end, wall_before + wall);
+      if (o.progress) fmt::print(stderr, "[brash-ode] {}\n", meta["reason"].get<std::string>());
+      res.stopped_by_signal = stop_signal;
+      res.steps = k_end;
+      res.simulated_s = t_stop;
+      res.wall_time_s = wall_before + wall;
+      res.stats = w.stats();
+      return res;
+    }
     const auto now = clock::now();
     res.loop_time_s = std::chrono::duration<double>(now - loop0).count();
     res.wall_time_s = wall_before + std::chrono::duration<double>(now - t_start).count();

@@ -26,8 +26,9 @@ struct RunOptions {
   double overlap_tolerance_over_d = 1e-4;  // packing overlaps beyond this fraction of d_mean are errors
   double restart_every_s = 0.1;        // simulated time between restart files (0 = none)
   // Resume the run in out_dir from its newest intact restart file: every other option is taken from the run's
-  // meta.json ("ode_options"), except progress and crash_after_step.
+  // meta.json ("ode_options"), except progress, crash_after_step and stop_after_step.
   bool resume = false;
+  long stop_after_step = -1;           // testing: raise SIGTERM during this step (a stop request, handled)
   long crash_after_step = -1;          // testing: std::_Exit(137) right after this step (a kill -9: no cleanup)
 };
 
@@ -39,6 +40,7 @@ struct RunResult {
   double wall_time_s = 0, loop_time_s = 0;
   double simulated_s = 0;
   double mean_fx_window_N = 0;         // mean hull fx over the case window (clipped to the run)
+  int stopped_by_signal = 0;           // SIGINT / SIGTERM ended the run early (resumable at `steps`), else 0
   Stats stats;
 };
 
