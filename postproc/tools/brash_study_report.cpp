@@ -1220,8 +1220,8 @@ void section_engines_so_far(const std::vector<const Run*>& runs, std::string& md
       const auto hl = brash::post::read_force_history(l.run_dir / "hull_force.csv", false);
       if (h.t_s.empty() || hl.t_s.empty()) continue;
       const double t_end = std::min(h.t_s.back(), hl.t_s.back());
-      const double kBin_s =
-          t_end >= 2.0 ? 1.0 : 0.1;  // whole seconds; tenths for a record that is still short
+      // whole seconds; halves or tenths for a record that is still short
+      const double kBin_s = t_end >= 4.0 ? 1.0 : t_end >= 1.0 ? 0.5 : 0.1;
       const auto mine = bin_means(h, kBin_s, t_end), ref = bin_means(hl, kBin_s, t_end);
       if (mine.empty()) continue;
       md += fmt::format(
