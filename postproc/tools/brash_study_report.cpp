@@ -1190,9 +1190,10 @@ std::vector<double> bin_means(const brash::post::ForceHistory& h, double w_s, do
   std::vector<double> sum(nbins, 0.0);
   std::vector<int> n(nbins, 0);
   for (std::size_t i = 0; i < h.t_s.size(); ++i) {
-    // a row is stamped at the end of its output interval: it belongs to the bin its interval lies in
-    const double t_mid = h.t_s[i] - 1e-9;
-    const auto b = static_cast<std::size_t>(std::max(0.0, std::floor(t_mid / w_s)));
+    // a row is stamped at the end of its output interval: it belongs to the bin its interval lies in (a row
+    // at t = 0, LIGGGHTS' state before the first step, closes no interval)
+    if (h.t_s[i] <= 0.0) continue;
+    const auto b = static_cast<std::size_t>(std::floor((h.t_s[i] - 1e-9) / w_s));
     if (b >= nbins) continue;
     sum[b] -= h.fx_N[i];
     ++n[b];

@@ -474,7 +474,7 @@ TEST(StudyReport, UnfinishedEngineRunIsBinnedBesideLiggghts) {
     // LIGGGHTS: 2 N for t in (0, 2] s, 3 N after; ODE: 2.5 N, then 2.7 N, reaching 4.55 s (rows stamped at
     // the end of their 0.05 s interval)
     std::ofstream l(d / "runs/l/hull_force.csv"), o(d / "runs/o/hull_force.csv");
-    l << "t_s,fx_N,fy_N,fz_N\n";
+    l << "t_s,fx_N,fy_N,fz_N\n0,-100,0,0\n";  // a row at t = 0 (no interval) is not in the first bin
     o << "t_s,fx_N,fy_N,fz_N\n";
     for (int k = 1; k <= 100; ++k) l << fmt::format("{:.2f},{},0,0\n", 0.05 * k, k <= 40 ? -2.0 : -3.0);
     for (int k = 1; k <= 91; ++k) o << fmt::format("{:.2f},{},0,0\n", 0.05 * k, k <= 40 ? -2.5 : -2.7);
