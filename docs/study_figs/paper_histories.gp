@@ -8,4 +8,4 @@ set xlabel 'model time t [s]'
 set ylabel 'full-scale resistance [kN] (-fx x lambda^3, 0.5 s means)'
 set title 'The paper case: resistance histories of our runs and the paper levels'
 set object 1 rect from 12,graph 0 to 20,graph 1 fc rgb '#eeeeee' fs solid 1 noborder behind
-plot 'paper_histories.dat' index 0 using 1:2 with lines lw 2 title 'R25 liggghts drag', 'paper_histories.dat' index 1 using 1:2 with lines lw 2 title 'R26 liggghts added_mass', 'paper_histories.dat' index 2 using 1:2 with lines lw 2 title 'R27 liggghts both', 393 with lines dt 2 lc rgb 'black' title 'paper added mass (393 kN)', 378 with lines dt 3 lc rgb 'black' title 'paper drag (378 kN)'
+plot 'paper_histories.dat' index 0 using 1:2 with lines lw 2 title 'R25 liggghts drag', 'paper_histories.dat' index 1 using 1:2 with lines lw 2 title 'R26 liggghts added_mass', 'paper_histories.dat' index 2 using 1:2 with lines lw 2 title 'R27 liggghts both', 'paper_histories.dat' index 3 using 1:2 with lines lw 2 title 'R29 ode drag (in progress, t = 1.2 s)', 393 with lines dt 2 lc rgb 'black' title 'paper added mass (393 kN)', 378 with lines dt 3 lc rgb 'black' title 'paper drag (378 kN)'
