@@ -1,8 +1,8 @@
 // brash-ode: the standalone ODE simulator.
 //   brash-ode CASE_DIR [--out RUN_DIR] [--duration S] [...]   run a case into the common run layout
 //   brash-ode --resume RUN_DIR                               continue a killed run from its restart files
-// SIGINT / SIGTERM stop a run after the step in progress, resumable there (exit 130 / 143).
 //   brash-ode --single rise|float|heave|all [--dt S]         single-sphere scenes vs the reference integrator
+// SIGINT / SIGTERM stop a run after the step in progress, resumable there (exit 130 / 143).
 #include <fmt/format.h>
 
 #include <iostream>
@@ -41,11 +41,7 @@ int main(int argc, char** argv) {
     if (!resume_dir.empty()) {
       o.out_dir = resume_dir;
       o.resume = true;
-      const auto r = brash::ode::run_case(o);
-      std::cout << r.run_dir.string() << "\n";
-      return r.stopped_by_signal ? 128 + r.stopped_by_signal : 0;
-    }
-    if (o.case_dir.empty()) {
+    } else if (o.case_dir.empty()) {
       fmt::print(stderr, "brash-ode: error: give a CASE_DIR (or --single SCENE)\n{}", app.help());
       return 2;
     }

@@ -640,26 +640,6 @@ RunResult run_case(const RunOptions& cli_options) {
       }
     }
     if (o.progress && tty) fmt::print(stderr, "\n");
-    if (stop_signal != 0) {
-      // Resumable where it stopped: the rows so far, then the restart file of this step (a resume drops rows
-      // after its restart time, so the order matters as for the periodic files).
-      const double wall = std::chrono::duration<double>(clock::now() - t_start).count();
-      const double t_stop = double(k_end) * st.dt_s;
-      meta["status"] = "stopped";
-      meta["reason"] =
-          fmt::format("stopped by signal {} at step {} (t = {:.4f} s); resume with brash-ode --resume {}",
-                      stop_signal == SIGINT ? "SIGINT" : "SIGTERM", k_end, t_stop, run_dir.string());
-      logln(meta["reason"].get<std::string>());
-      flush(k_end, wall);
-      save_restart(k_end, wall_before + wall);
-      if (o.progress) fmt::print(stderr, "[brash-ode] {}\n", meta["reason"].get<std::string>());
-      res.stopped_by_signal = stop_signal;
-      res.steps = k_end;
-      res.simulated_s = t_stop;
-      res.wall_time_s = wall_before + wall;
-      res.stats = w.stats();
-      return res;
-    }
     const auto now = clock::now();
     res.loop_time_s = std::chrono::duration<double>(now - loop0).count();
     res.wall_time_s = wall_before + std::chrono::duration<double>(now - t_start).count();
@@ -669,6 +649,20 @@ RunResult run_case(const RunOptions& cli_options) {
     res.stats = w.stats();
     res.particle_steps = w.stats().particle_steps - ps_settle;
     res.mean_fx_window_N = win_n ? win_sum / double(win_n) : NAN;
+    if (stop_signal != 0) {
+      // Resumable where it stopped: the rows so far, then the restart file of this step (a resume drops rows
+      // after its restart time, so the order matters as for the periodic files).
+      meta["status"] = "stopped";
+      meta["reason"] =
+          fmt::format("stopped by signal {} at step {} (t = {:.4f} s); resume with brash-ode --resume {}",
+                      stop_signal == SIGINT ? "SIGINT" : "SIGTERM", k_end, t_end, run_dir.string());
+      logln(meta["reason"].get<std::string>());
+      flush(k_end, res.wall_time_s - wall_before);
+      save_restart(k_end, res.wall_time_s);
+      if (o.progress) fmt::print(stderr, "[brash-ode] {}\n", meta["reason"].get<std::string>());
+      res.stopped_by_signal = stop_signal;
+      return res;
+    }
     meta["status"] = "complete";
     meta["loop_time_s"] = res.loop_time_s;
     // Rates from this process's loop only (a resumed run: the steps since the restart point).
