@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <numbers>
 #include <sstream>
 
@@ -112,10 +113,12 @@ struct Reader {
     throw InputError(fmt::format("{}: key '{}': {}", source, key, msg));
   }
 
-  // Every key of a mapping must be one of `known`; a section that is not a mapping is an error.
+  // Every key of a mapping must be one of `known` and given once (yaml-cpp keeps both of two equal keys and
+  // reads the first, so the second would be ignored without a word); a section that is not a mapping is an error.
   void check_map(const YAML::Node& n, const std::string& where,
                  std::initializer_list<std::string_view> known) const {
     if (!n.IsMap()) fail(n, where.empty() ? "<top>" : where, "expected a mapping of keys");
+    std::map<std::string, int> first_line;  // key -> its line (0-based)
     for (const auto& kv : n) {
       // A list or mapping used as a key ("{[0.1, 0.1]}") has no text: yaml-cpp's as<string> would throw
       // its own exception (found by tests/fuzz/fuzz_case).
@@ -127,6 +130,9 @@ struct Reader {
         for (auto s : known) list += (list.empty() ? "" : ", ") + std::string(s);
         fail(kv.first, where.empty() ? k : where + "." + k, "unknown key (known: " + list + ")");
       }
+      if (const auto [at, fresh] = first_line.emplace(k, kv.first.Mark().line); !fresh)
+        fail(kv.first, where.empty() ? k : where + "." + k,
+             fmt::format("given twice (first at line {}); give each key once", at->second + 1));
     }
   }
 
@@ -329,6 +335,15 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
       r.fail(s["diameter_sd_m"], "ice.diameter_sd_m",
              fmt::format("mean - truncation_sd * sd = {} - {} * {} must be > 0 (no zero-size spheres)",
                          c.ice.diameter_mean_m, c.ice.diameter_truncation_sd, c.ice.diameter_sd_m));
+    // The ice is a layer of pieces: one thinner than a piece cannot be built (the line is the thickness's, or the
+    // diameter's when the thickness is the default).
+    if (c.ice.thickness_m < c.ice.diameter_mean_m) {
+      const bool given = s["thickness_m"].IsDefined();
+      r.fail(given ? s["thickness_m"] : s["diameter_mean_m"], "ice.thickness_m",
+             fmt::format("{} m{} is thinner than one piece (ice.diameter_mean_m = {} m): the ice must be at least "
+                         "one layer of pieces thick",
+                         c.ice.thickness_m, given ? "" : " (the default)", c.ice.diameter_mean_m));
+    }
   }
   {  // water
     const auto s = r.section(root, "water",

@@ -73,8 +73,15 @@ TEST(CaseLoader, MinimalCaseFillsPaperDefaults) {
 }
 
 TEST(CaseLoader, SdDefaultsToFivePercentOfTheCasesMean) {
-  const Case c = brash::load_case(write_case(temp_dir("sd"), "name: m\nice: {diameter_mean_m: 0.04}\n"));
+  const Case c =
+      brash::load_case(write_case(temp_dir("sd"), "name: m\nice: {thickness_m: 0.08, diameter_mean_m: 0.04}\n"));
   EXPECT_DOUBLE_EQ(c.ice.diameter_sd_m, 0.002);
+}
+
+TEST(CaseLoader, IceOnePieceThickLoads) {
+  // the thinnest ice the loader takes: one layer of pieces (thinner: tests/robustness/test_catalogue.cpp)
+  const Case c = brash::parse_case("name: m\nice: {thickness_m: 0.035, diameter_mean_m: 0.035}\n", kRepo, "mem");
+  EXPECT_DOUBLE_EQ(c.ice.thickness_m, c.ice.diameter_mean_m);
 }
 
 TEST(CaseLoader, ShortRunGetsWindowOverItsLastPart) {

@@ -181,6 +181,18 @@ std::vector<Entry> catalogue() {
                        {"{dir}/case.yaml:3", "key 'fsicr'", "keys must be plain names"}));
   c.push_back(bad_case("case_mapping_as_top_key", "name: x\n? {a: 1}\n: 2\n",
                        {"{dir}/case.yaml:2", "key '<top>'", "keys must be plain names"}));
+  // Found by a bad-input battery (issue 33): yaml-cpp keeps one of two equal keys without a word.
+  c.push_back(bad_case("case_key_given_twice", "name: x\nice:\n  seed: 1\n  porosity: 0.3\n  seed: 2\n",
+                       {"{dir}/case.yaml:5:3", "key 'ice.seed'", "given twice", "first at line 3"}));
+  c.push_back(bad_case("case_key_given_twice_in_a_flow_mapping", "name: x\nship: {speed_m_s: 0.3, speed_m_s: 0.5}\n",
+                       {"{dir}/case.yaml:2", "key 'ship.speed_m_s'", "given twice", "first at line 2"}));
+  c.push_back(bad_case("case_section_given_twice", "name: x\nice: {seed: 1}\nrun: {duration_s: 4}\nice: {porosity: 0.3}\n",
+                       {"{dir}/case.yaml:4:1", "key 'ice'", "given twice", "first at line 2"}));
+  // An ice layer thinner than one piece (issue 33) was accepted without a word.
+  c.push_back(bad_case("case_ice_thinner_than_a_piece", "name: x\nice: {thickness_m: 0.03, diameter_mean_m: 0.035}\n",
+                       {"{dir}/case.yaml:2", "key 'ice.thickness_m'", "0.03 m", "ice.diameter_mean_m = 0.035 m"}));
+  c.push_back(bad_case("case_default_thickness_thinner_than_the_pieces", "name: x\nice:\n  diameter_mean_m: 0.04\n",
+                       {"{dir}/case.yaml:3", "key 'ice.thickness_m'", "default", "ice.diameter_mean_m = 0.04 m"}));
   c.push_back(bad_case("case_yaml_syntax", "name: x\nice: {porosity: [0.3\n",
                        {"{dir}/case.yaml:", "YAML syntax error"}));
   c.push_back(bad_case("case_empty_file", "", {"{dir}/case.yaml", "empty case file"}));
