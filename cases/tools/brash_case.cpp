@@ -157,7 +157,7 @@ int main(int argc, char** argv) {
   nw->add_option("--friction-ice", o.friction_ice, "ice-ice friction (also ice-wall unless --friction-wall)");
   nw->add_option("--friction-hull", o.friction_hull, "ice-hull friction");
   nw->add_option("--friction-wall", o.friction_wall, "ice-wall friction");
-  nw->add_option("--fluid-model", o.fluid_model, "drag | added_mass | both");
+  nw->add_option("--fluid-model", o.fluid_model, "both (Eq. 1 + Eq. 2) | drag (Eq. 1) | added_mass (Eq. 2 alone); default: the template's");
   nw->add_option("--treatment", o.treatment, "implicit | explicit");
   nw->add_option("--duration", o.duration, "simulated time [s]");
   nw->add_option("--window", o.window, "averaging window START END [s]")->expected(2);

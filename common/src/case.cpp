@@ -268,7 +268,7 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
   }
   if (!root.IsDefined() || root.IsNull()) throw InputError(source + ": empty case file");
   r.check_map(root, "", {"name", "description", "hull", "ship", "channel", "ice", "water", "friction",
-                         "contact", "fluid", "run", "fsicr", "speedups", "guards"});
+                         "contact", "fluid", "run", "fsicr", "speedups", "guards", "references"});
 
   Case c;
   if (!root["name"].IsDefined()) throw InputError(source + ": key 'name': missing (required)");
@@ -470,6 +470,29 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
           "an integer in [1, 1000000]");
     c.guards.every_steps = static_cast<int>(every);
   }
+  {  // references: published values the report compares with (none unless declared)
+    const auto s = r.section(root, "references", {"source", "resistance_full_kN", "fsicr_R_CH_kN", "ratio_fsicr_to_sim"});
+    r.str(s, "references", "source", c.references.source);
+    const auto per_model = [&](std::string_view k, std::map<std::string, double>& out) {
+      const YAML::Node m = s[std::string(k)];
+      if (!m.IsDefined() || m.IsNull()) return;
+      const std::string where = "references." + std::string(k);
+      r.check_map(m, where, {"drag", "added_mass", "both"});
+      for (const auto& kv : m) {
+        const std::string model = kv.first.as<std::string>();
+        r.num(m, where, model, out[model], positive, "> 0");
+      }
+    };
+    per_model("resistance_full_kN", c.references.resistance_full_kN);
+    per_model("ratio_fsicr_to_sim", c.references.ratio_fsicr_to_sim);
+    if (const auto v = s["fsicr_R_CH_kN"]; v.IsDefined() && !v.IsNull()) {
+      double kN = 0;
+      r.num(s, "references", "fsicr_R_CH_kN", kN, positive, "> 0");
+      c.references.fsicr_R_CH_kN = kN;
+    }
+    if (c.references.declared() && c.references.source.empty())
+      r.fail(s, "references.source", "missing: name where the reference values are published");
+  }
   return c;
 }
 
@@ -603,6 +626,18 @@ std::string dump_case_yaml(const Case& c) {
   o += "guards:\n";
   line("  ", "max_hull_penetration_d", num(c.guards.max_hull_penetration_d));
   line("  ", "every_steps", fmt::format("{}", c.guards.every_steps));
+  if (const auto& ref = c.references; ref.declared() || !ref.source.empty()) {
+    o += "references:\n";
+    line("  ", "source", yaml_quoted(ref.source));
+    const auto per_model = [&](std::string_view key, const std::map<std::string, double>& values) {
+      if (values.empty()) return;
+      o += fmt::format("  {}:\n", key);
+      for (const auto& [model, v] : values) line("    ", model, num(v));
+    };
+    per_model("resistance_full_kN", ref.resistance_full_kN);
+    if (ref.fsicr_R_CH_kN) line("  ", "fsicr_R_CH_kN", num(*ref.fsicr_R_CH_kN));
+    per_model("ratio_fsicr_to_sim", ref.ratio_fsicr_to_sim);
+  }
   return o;
 }
 

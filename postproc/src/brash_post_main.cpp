@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <map>
+#include <string_view>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -160,6 +162,18 @@ int run_compare(const std::vector<fs::path>& runs, const fs::path& out) {
 
 int run_fsicr(const brash::FsicrParams& p, const std::string& ice_class) {
   const auto ic = parse_ice_class(ice_class);
+  // Geometry no hull has is an input error naming the option, before anything is computed; values outside the
+  // rule's validity range are warnings below the result.
+  static const std::map<std::string_view, std::string> kOption = {
+      {"L_m", "--L"},         {"B_m", "--B"},         {"T_m", "--T"},         {"alpha_deg", "--alpha"},
+      {"phi1_deg", "--phi1"}, {"phi2_deg", "--phi2"}, {"L_par_m", "--Lpar"},  {"L_bow_m", "--Lbow"},
+      {"A_wf_m2", "--Awf"}};
+  const auto impossible = fsicr_impossible_values(p, [](std::string_view field) { return kOption.at(field); });
+  if (!impossible.empty()) {
+    std::string all;
+    for (const auto& m : impossible) all += (all.empty() ? "" : "; ") + m;
+    throw brash::InputError("fsicr: " + all);
+  }
   const auto r = fsicr_channel_resistance(p, ic);
   fmt::print("ice class {}: H_M = {:.3f} m, H_F = {:.3f} m\n", brash::to_string(ic), r.H_M_m, r.H_F_m);
   fmt::print("psi = {:.3f} deg, Cmu = {:.4f}, Cpsi = {:.4f}\n", r.psi_deg, r.Cmu, r.Cpsi);

@@ -60,6 +60,46 @@ FsicrResult fsicr_channel_resistance(const FsicrParams& p, IceClass ice_class, c
   return r;
 }
 
+std::vector<std::string> fsicr_impossible_values(const FsicrParams& p,
+                                                 const std::function<std::string(std::string_view field)>& name) {
+  std::vector<std::string> out;
+  const auto called = [&](std::string_view field, double v) {
+    return fmt::format("{} {:g}", name ? name(field) : std::string(field), v);
+  };
+  const auto positive = [&](std::string_view field, double v, std::string_view what, bool zero_ok = false) {
+    if (std::isfinite(v) && (v > 0 || (zero_ok && v == 0))) return true;
+    out.push_back(fmt::format("{}: {} must be a finite number {} 0", called(field, v), what, zero_ok ? ">=" : ">"));
+    return false;
+  };
+  const auto angle = [&](std::string_view field, double v, std::string_view what) {
+    if (!(std::isfinite(v) && v > 0 && v <= 90))
+      out.push_back(fmt::format("{}: {} must be an angle in (0, 90] deg", called(field, v), what));
+  };
+  const bool L = positive("L_m", p.L_m, "the length between perpendiculars");
+  const bool B = positive("B_m", p.B_m, "the breadth");
+  positive("T_m", p.T_m, "the draught");
+  angle("alpha_deg", p.alpha_deg, "the waterline angle");
+  angle("phi1_deg", p.phi1_deg, "the stem rake");
+  angle("phi2_deg", p.phi2_deg, "the bow rake");
+  const bool par = positive("L_par_m", p.L_par_m, "the parallel mid-body length", true);
+  const bool bow = positive("L_bow_m", p.L_bow_m, "the bow length");
+  const bool awf = positive("A_wf_m2", p.A_wf_m2, "the bow's waterline area");
+  if (L && bow && p.L_bow_m > p.L_m)
+    out.push_back(fmt::format("{}: the bow is longer than the ship ({})", called("L_bow_m", p.L_bow_m), called("L_m", p.L_m)));
+  if (L && par && p.L_par_m > p.L_m)
+    out.push_back(fmt::format("{}: the parallel mid-body is longer than the ship ({})", called("L_par_m", p.L_par_m),
+                              called("L_m", p.L_m)));
+  else if (L && bow && par && p.L_bow_m <= p.L_m && p.L_bow_m + p.L_par_m > p.L_m)
+    out.push_back(fmt::format("{} + {} = {:g}: the bow and the parallel mid-body are longer than the ship ({})",
+                              called("L_bow_m", p.L_bow_m), called("L_par_m", p.L_par_m), p.L_bow_m + p.L_par_m,
+                              called("L_m", p.L_m)));
+  if (B && bow && awf && p.A_wf_m2 > p.L_bow_m * p.B_m)
+    out.push_back(fmt::format("{}: the bow's waterline area is larger than the {} x {} = {:g} rectangle that holds it",
+                              called("A_wf_m2", p.A_wf_m2), called("L_bow_m", p.L_bow_m), called("B_m", p.B_m),
+                              p.L_bow_m * p.B_m));
+  return out;
+}
+
 std::vector<std::string> fsicr_validity_warnings(const FsicrParams& p) {
   std::vector<std::string> w;
   const auto check = [&](std::string_view name, double v, double lo, double hi) {

@@ -89,27 +89,31 @@ plot {} using 1:2 with lines lw 1 lc rgb '#c0392b' title 'x (heading): fx', \
 fs::path plot_resistance_bars(const RunAnalysis& a, const fs::path& out_dir, const fs::path& work_dir) {
   fs::create_directories(work_dir);
   const auto data = work_dir / "resistance_bars.dat";
-  const double paper_sim = a.meta.fluid_model == "drag" ? PaperValues::drag_full_kN : PaperValues::added_mass_full_kN;
+  const std::string model = run_fluid_model(a);
   const double rch = a.fsicr.result ? a.fsicr.result->R_CH_N / 1000 : NAN;
-  // columns: x label value err colour
+  // columns: x label value err colour; the published values only where the case declares them
+  std::vector<std::string> bars{
+      fmt::format("\"simulation\\n({} {})\" {} {} 0", a.meta.engine, model, a.resistance_full_kN, a.resistance_full_ci95_kN),
+      fmt::format("\"FSICR R_CH\\n(ours, {})\" {} 0 1", a.fsicr.ice_class, std::isnan(rch) ? 0.0 : rch)};
+  const auto& ref = a.reference;
+  if (ref && ref->resistance_full_kN)
+    bars.push_back(fmt::format("\"published simulation\\n({})\" {} 0 2", model, *ref->resistance_full_kN));
+  if (ref && ref->fsicr_R_CH_kN) bars.push_back(fmt::format("\"published FSICR R_CH\" {} 0 2", *ref->fsicr_R_CH_kN));
   std::string d;
-  d += fmt::format("0 \"simulation\\n({} {})\" {} {} 0\n", a.meta.engine, a.meta.fluid_model, a.resistance_full_kN, a.resistance_full_ci95_kN);
-  d += fmt::format("1 \"FSICR R_CH\\n(ours, {})\" {} 0 1\n", a.fsicr.ice_class, std::isnan(rch) ? 0.0 : rch);
-  d += fmt::format("2 \"paper simulation\\n({})\" {} 0 2\n", a.meta.fluid_model == "drag" ? "drag" : "added mass", paper_sim);
-  d += fmt::format("3 \"paper FSICR\" {} 0 2\n", PaperValues::fsicr_R_CH_kN);
+  for (std::size_t i = 0; i < bars.size(); ++i) d += fmt::format("{} {}\n", i, bars[i]);
   brash::run::write_atomic(data, d);
-  const std::string ratio =
-      a.ratio_fsicr_to_sim
-          ? fmt::format("FSICR / simulation = {:.2f} (paper: {:.2f} added mass, 999 / 378 = {:.2f} drag)",
-                        *a.ratio_fsicr_to_sim, PaperValues::stated_ratio_added_mass,
-                        PaperValues::derived_ratio_drag)
-          : "R_CH not available";
-  const std::string body = fmt::format(R"(set title 'Full-scale channel resistance (lambda = {}): {}'
+  // Two short title lines (gnuplot's double-quoted "\n"), so a 900 px chart shows the whole title.
+  std::string subtitle = a.ratio_fsicr_to_sim ? fmt::format("FSICR / simulation = {:.2f}", *a.ratio_fsicr_to_sim)
+                                              : std::string("R_CH not available");
+  if (ref && ref->ratio_fsicr_to_sim)
+    subtitle += fmt::format(" (published: {:.2f})", *ref->ratio_fsicr_to_sim);
+  const std::string body = fmt::format(R"(set title "Full-scale channel resistance (lambda = {})\n{}"
 set ylabel 'resistance [kN]'
 set yrange [0:*]
 set offsets 0, 0, graph 0.12, 0
+set tmargin 4
 set bmargin 5
-set xrange [-0.6:3.6]
+set xrange [-0.6:{}]
 set style fill solid 0.8 border -1
 set boxwidth 0.6
 set grid ytics
@@ -120,7 +124,7 @@ set key off
 plot {} using 1:3:5:xtic(2) with boxes lc palette, \
      '' using 1:3:4 with yerrorbars lc rgb 'black' pt -1 lw 2, \
      '' using 1:3:(sprintf('%.0f kN', $3)) with labels offset 0,1
-)", a.case_.scale_lambda, ratio, q(data));
+)", a.case_.scale_lambda, subtitle, static_cast<double>(bars.size()) - 0.4, q(data));
   return render(out_dir / "resistance_full_scale.png", work_dir, "resistance_bars", body, 900, 600);
 }
 
@@ -177,7 +181,8 @@ CompareRow compare_row(const RunAnalysis& a) {
   r.run = a.run_dir.filename().string();
   if (r.run.empty()) r.run = a.run_dir.parent_path().filename().string();
   r.engine = a.meta.engine;
-  r.fluid_model = a.meta.fluid_model.empty() ? a.case_.fluid_model : a.meta.fluid_model;
+  r.fluid_model = run_fluid_model(a);
+  if (a.reference && a.reference->resistance_full_kN) r.reference_full_kN = *a.reference->resistance_full_kN;
   r.speed_m_s = a.case_.speed_m_s;
   r.mean_N = a.resistance.mean;
   r.ci95_N = a.resistance.ci95;
@@ -196,7 +201,13 @@ std::string compare_markdown(const std::vector<CompareRow>& rows) {
     s += fmt::format("| {} | {} | {} | {:.3f} | {:.4f} ± {:.4f} | {:.1f} ± {:.1f} | {:.1f} | {:.2f} | {} |\n", r.run, r.engine,
                      r.fluid_model, r.speed_m_s, r.mean_N, r.ci95_N, r.full_kN, r.full_ci95_kN, r.R_CH_kN, r.ratio,
                      r.complete ? "yes" : "NO");
-  s += "\n± = 95 % confidence interval (block averaging). Paper: added mass 393 kN, drag 378 kN, FSICR 999 kN.\n";
+  s += "\n± = 95 % confidence interval (block averaging).\n";
+  std::string refs;
+  for (const auto& r : rows)
+    if (!std::isnan(r.reference_full_kN))
+      refs += fmt::format("{}{}: {:.0f} kN ({:+.1f} %)", refs.empty() ? "" : "; ", r.run, r.reference_full_kN,
+                          100 * (r.full_kN / r.reference_full_kN - 1));
+  if (!refs.empty()) s += "Published resistance declared by the run's case (full scale): " + refs + ".\n";
   return s;
 }
 
@@ -214,10 +225,14 @@ fs::path plot_compare(const std::vector<CompareRow>& rows, const fs::path& out_d
   std::string d;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const auto& r = rows[i];
-    d += fmt::format("{} \"{}\\n{} {:.3f} m/s{}\" {} {} {}\n", i, r.engine, r.fluid_model, r.speed_m_s, r.complete ? "" : "\\n(incomplete)",
-                     r.full_kN, r.full_ci95_kN, std::isnan(r.R_CH_kN) ? 0.0 : r.R_CH_kN);
+    // column 6: the published resistance the run's case declares, NaN (not drawn) where it declares none
+    d += fmt::format("{} \"{}\\n{} {:.3f} m/s{}\" {} {} {} {}\n", i, r.engine, r.fluid_model, r.speed_m_s,
+                     r.complete ? "" : "\\n(incomplete)", r.full_kN, r.full_ci95_kN,
+                     std::isnan(r.R_CH_kN) ? 0.0 : r.R_CH_kN, std::isnan(r.reference_full_kN) ? "NaN" : fmt::format("{}", r.reference_full_kN));
   }
   brash::run::write_atomic(data, d);
+  const bool with_reference =
+      std::any_of(rows.begin(), rows.end(), [](const CompareRow& r) { return !std::isnan(r.reference_full_kN); });
   const std::string body = fmt::format(R"(set title 'Full-scale ice resistance per run (bars, 95 % CI) and FSICR R_CH (points)'
 set ylabel 'resistance [kN]'
 set yrange [0:*]
@@ -230,9 +245,8 @@ set grid ytics
 set key top right
 plot {} using 1:3:xtic(2) with boxes lc rgb '#2e86c1' title 'simulation', \
      '' using 1:3:4 with yerrorbars lc rgb 'black' pt -1 lw 2 notitle, \
-     '' using 1:5 with points pt 7 ps 2 lc rgb '#c0392b' title 'FSICR R_CH', \
-     {} with lines dt 2 lc rgb '#888888' title 'paper added mass 393 kN'
-)", static_cast<double>(rows.size()) - 0.4, q(data), PaperValues::added_mass_full_kN);
+     '' using 1:5 with points pt 7 ps 2 lc rgb '#c0392b' title 'FSICR R_CH'{}
+)", static_cast<double>(rows.size()) - 0.4, q(data), with_reference ? ", \\\n     '' using 1:6 with points pt 5 ps 2 lc rgb '#888888' title 'published reference'" : "");
   return render(out_dir / "compare.png", work_dir, "compare", body, std::max<int>(800, 220 * static_cast<int>(rows.size())), 600);
 }
 

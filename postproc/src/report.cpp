@@ -197,8 +197,51 @@ RunAnalysis analyze_run(const std::filesystem::path& run_dir) {
   a.fsicr = resolve_fsicr(a.case_, measured);
   if (a.fsicr.result && a.resistance_full_kN > 0)
     a.ratio_fsicr_to_sim = a.fsicr.result->R_CH_N / 1000.0 / a.resistance_full_kN;
+  a.reference = published_reference(a.case_, run_fluid_model(a));
   return a;
 }
+
+std::string run_fluid_model(const RunAnalysis& a) {
+  return a.meta.fluid_model.empty() ? a.case_.fluid_model : a.meta.fluid_model;
+}
+
+namespace {
+
+nlohmann::ordered_json reference_json(const RunAnalysis& a) {
+  if (!a.reference) return nullptr;
+  const auto& r = *a.reference;
+  nlohmann::ordered_json j{{"source", r.source},
+                           {"fluid_model", r.fluid_model},
+                           {"resistance_full_kN", opt(r.resistance_full_kN)},
+                           {"fsicr_R_CH_kN", opt(r.fsicr_R_CH_kN)},
+                           {"ratio_fsicr_to_sim", opt(r.ratio_fsicr_to_sim)},
+                           {"ratio_stated", r.ratio_stated}};
+  j["resistance_over_reference"] =
+      r.resistance_full_kN ? nlohmann::ordered_json(a.resistance_full_kN / *r.resistance_full_kN) : nullptr;
+  return j;
+}
+
+std::string reference_markdown(const RunAnalysis& a) {
+  if (!a.reference) return "";
+  const auto& r = *a.reference;
+  std::string md = fmt::format("## Published reference ({})\n\n| quantity | this run | published |\n|---|---|---|\n",
+                               r.source);
+  if (r.resistance_full_kN)
+    md += fmt::format("| resistance, full scale ({}) | {:.1f} ± {:.1f} kN | {:.0f} kN (this run {:+.1f} %) |\n",
+                      r.fluid_model, a.resistance_full_kN, a.resistance_full_ci95_kN, *r.resistance_full_kN,
+                      100 * (a.resistance_full_kN / *r.resistance_full_kN - 1));
+  if (r.fsicr_R_CH_kN)
+    md += fmt::format("| FSICR R_CH | {} | {:.0f} kN |\n",
+                      a.fsicr.result ? fmt::format("{:.1f} kN", a.fsicr.result->R_CH_N / 1000) : "n/a",
+                      *r.fsicr_R_CH_kN);
+  if (r.ratio_fsicr_to_sim)
+    md += fmt::format("| FSICR / simulation | {} | {:.2f} ({}) |\n",
+                      a.ratio_fsicr_to_sim ? fmt::format("{:.2f}", *a.ratio_fsicr_to_sim) : "n/a",
+                      *r.ratio_fsicr_to_sim, r.ratio_stated ? "stated" : "its R_CH over its resistance");
+  return md + "\n";
+}
+
+}  // namespace
 
 nlohmann::ordered_json report_json(const RunAnalysis& a) {
   using J = nlohmann::ordered_json;
@@ -215,13 +258,12 @@ nlohmann::ordered_json report_json(const RunAnalysis& a) {
     fsicr["R_CH_kN"] = nullptr;
   }
   fsicr["warnings"] = a.fsicr.warnings;
-  fsicr["paper_R_CH_kN"] = PaperValues::fsicr_R_CH_kN;
 
   const auto& w = a.window;
   J j;
   j["engine"] = a.meta.engine;
   j["engine_version"] = a.meta.engine_version;
-  j["fluid_model"] = a.meta.fluid_model.empty() ? a.case_.fluid_model : a.meta.fluid_model;
+  j["fluid_model"] = run_fluid_model(a);
   j["treatment"] = a.meta.treatment;
   j["case"] = a.case_.name;
   j["status"] = a.meta.status;
@@ -258,7 +300,7 @@ nlohmann::ordered_json report_json(const RunAnalysis& a) {
     j["early_stop"] = {{"t_s", e->t_s},
                        {"requested_duration_s", e->requested_duration_s},
                        {"rel_ci_threshold", e->rel_ci_threshold}};
-  j["paper_full_kN"] = {{"added_mass", PaperValues::added_mass_full_kN}, {"drag", PaperValues::drag_full_kN}};
+  j["reference"] = reference_json(a);  // null: the case declares no published values
   if (a.band)
     j["contact_band"] = {{"band_below_m", a.band->band_below_m},
                          {"deepest_piece_bottom_below_waterline_m", a.band->deepest_bottom_m},
@@ -273,7 +315,7 @@ nlohmann::ordered_json report_json(const RunAnalysis& a) {
 
 std::string report_markdown(const RunAnalysis& a) {
   const auto& w = a.window;
-  const auto fluid = a.meta.fluid_model.empty() ? a.case_.fluid_model : a.meta.fluid_model;
+  const auto fluid = run_fluid_model(a);
   std::string md = fmt::format("# brash run report: {}\n\n", a.run_dir.filename().string());
   if (!a.notes.empty()) {
     md += "## Read first\n\n";
@@ -303,7 +345,7 @@ std::string report_markdown(const RunAnalysis& a) {
                     a.resistance.mean, a.resistance.ci95, a.resistance_full_kN, a.resistance_full_ci95_kN,
                     a.fx.mean, a.fy.mean, a.fz.mean);
   md += fmt::format("± is the 95 % interval from block averaging (blocks of {} samples, {} blocks, plateau {}). "
-                    "Full scale = model * lambda^3. Paper (full scale): added mass 393 kN, drag 378 kN.\n\n",
+                    "Full scale = model * lambda^3.\n\n",
                     L.block_size, L.n_blocks, a.resistance.plateau_found ? "found" : "NOT found");
   if (const auto& t = a.resistance_trend)
     md += fmt::format(
@@ -316,17 +358,12 @@ std::string report_markdown(const RunAnalysis& a) {
     md += fmt::format("| {} | {:.4g} | {} |\n", name, a.fsicr.params.*field, a.fsicr.source.at(name));
   md += fmt::format("| psi_deg | {:.4g} | {} |\n\n", a.fsicr.params.psi_deg, a.fsicr.source.at("psi_deg"));
   if (const auto& r = a.fsicr.result)
-    md += fmt::format("R_CH = **{:.1f} kN** (H_F {:.3f} m, H_M {:.1f} m, Cmu {:.4f}, Cpsi {:.4f}, (LT/B^2)^3 {:.2f} used {:.2f}). "
-                      "Paper: 999 kN (its hull parameters are not published).\n\n",
+    md += fmt::format("R_CH = **{:.1f} kN** (H_F {:.3f} m, H_M {:.1f} m, Cmu {:.4f}, Cpsi {:.4f}, (LT/B^2)^3 {:.2f} used {:.2f}).\n\n",
                       r->R_CH_N / 1000, r->H_F_m, r->H_M_m, r->Cmu, r->Cpsi, r->LTB3_raw, r->LTB3_used);
   for (const auto& wmsg : a.fsicr.warnings) md += fmt::format("- warning: {}\n", wmsg);
   md += "\n";
-  if (a.ratio_fsicr_to_sim)
-    md += fmt::format(
-        "FSICR / simulation = **{:.2f}** (paper: {:.2f} with its added-mass model, stated; {:.0f} / {:.0f} = "
-        "{:.2f} with drag).\n",
-        *a.ratio_fsicr_to_sim, PaperValues::stated_ratio_added_mass, PaperValues::fsicr_R_CH_kN,
-        PaperValues::drag_full_kN, PaperValues::derived_ratio_drag);
+  if (a.ratio_fsicr_to_sim) md += fmt::format("FSICR / simulation = **{:.2f}**.\n\n", *a.ratio_fsicr_to_sim);
+  md += reference_markdown(a);
   return md;
 }
 

@@ -32,6 +32,7 @@
 #include <nlohmann/json.hpp>
 
 #include <brash/case.hpp>
+#include <brash/error.hpp>
 #include <brash/post/force_history.hpp>
 #include <brash/post/report.hpp>
 
@@ -365,6 +366,7 @@ struct Study {
   Run& run_of(const Row& r) { return runs.at(key_of(r)); }
   std::map<const Row*, fs::path> keys;
   fs::path key_of(const Row& r) const { return keys.at(&r); }
+  brash::ReferenceSpec paper;  // the paper case's published values (its case.yaml's references)
 };
 
 void build(Study& s) {
@@ -493,22 +495,20 @@ std::vector<const Run*> started_paper_case_runs(Study& s) {
   return runs;
 }
 
-// The paper's FSICR / simulation ratio for a fluid model: stated for its added-mass result (2.54), derived
-// from its two numbers for drag (999 / 378; the paper states no ratio for drag).
-std::string paper_ratio_cell(const std::string& model) {
-  using PV = brash::post::PaperValues;
-  if (model == "drag") return fmt::format("{:.2f} (999 / 378)", PV::derived_ratio_drag);
-  return model == "added_mass" || model == "both" ? fmt::format("{:.2f}", PV::stated_ratio_added_mass)
-                                                  : "n/a";
+// The paper's full-scale resistance for a fluid model, as the paper case declares it (NaN: none declared).
+double paper_full_kN(const brash::ReferenceSpec& paper, const std::string& model) {
+  const auto it = paper.resistance_full_kN.find(model);
+  return it == paper.resistance_full_kN.end() ? NAN : it->second;
 }
 
-// The paper's full-scale resistance for a fluid model: its added mass model (which `both` also reads) or
-// drag.
-double paper_full_kN(const std::string& model) {
-  using PV = brash::post::PaperValues;
-  return model == "added_mass" || model == "both" ? PV::added_mass_full_kN
-         : model == "drag"                        ? PV::drag_full_kN
-                                                  : NAN;
+// The paper's FSICR / simulation ratio for a fluid model: as stated where the case declares it, else derived
+// from its two published numbers (the paper states no ratio for drag).
+std::string paper_ratio_cell(const brash::ReferenceSpec& paper, const std::string& model) {
+  if (const auto it = paper.ratio_fsicr_to_sim.find(model); it != paper.ratio_fsicr_to_sim.end())
+    return fmt::format("{:.2f}", it->second);
+  const double kN = paper_full_kN(paper, model);
+  if (!paper.fsicr_R_CH_kN || !std::isfinite(kN)) return "n/a";
+  return fmt::format("{:.2f} ({:.0f} / {:.0f})", *paper.fsicr_R_CH_kN / kN, *paper.fsicr_R_CH_kN, kN);
 }
 
 // Sensitivity groups (every group but paper, speed and engine), in manifest order.
@@ -561,28 +561,33 @@ void section_paper(Study& s, std::string& md) {
     md += "**No completed run of the paper case (cases/jbc_ia_5kn) is in this study. Every row below is a "
           "reduced case: its full-scale number is the reduced scene scaled by lambda^3, NOT the paper's result "
           "and not comparable one to one with 393 / 378 kN.**\n\n";
-  md +=
-      "Paper (Kogakuin): added mass 393 kN, drag 378 kN (difference +4.0 %), FSICR R_CH 999 kN, ratio R_CH / "
-      "R_sim 2.54 for its added-mass result (for drag, 999 / 378 = 2.64 is derived, not stated). Our R_CH "
-      "uses the hull parameters measured on our STL (columns L, B, T, alpha, phi2, A_wf at "
-      "full scale).\n\n";
+  const double paper_am = paper_full_kN(s.paper, "added_mass"), paper_drag = paper_full_kN(s.paper, "drag");
+  const std::string paper_rch = s.paper.fsicr_R_CH_kN ? num(*s.paper.fsicr_R_CH_kN, 0) : "n/a";
+  md += fmt::format(
+      "Paper (its values as the paper case declares them): added mass {:.0f} kN, drag {:.0f} kN (difference "
+      "{:+.1f} %), FSICR R_CH {} kN, ratio R_CH / R_sim {} for its added-mass result (for drag, {} is derived, "
+      "not stated). Our R_CH uses the hull parameters measured on our STL (columns L, B, T, alpha, phi2, A_wf "
+      "at full scale).\n\n",
+      paper_am, paper_drag, 100 * (paper_am / paper_drag - 1), paper_rch, paper_ratio_cell(s.paper, "added_mass"),
+      paper_ratio_cell(s.paper, "drag"));
   md += "| run | case / scale | engine | fluid model | R model [N] ± CI95 | R full [kN] ± CI95 | paper R full [kN] | "
         "R_CH ours [kN] | paper R_CH [kN] | ratio ours | paper ratio | status |\n"
         "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Row* row : rows) {
     const Run& r = s.run_of(*row);
-    const double paper_kN = paper_full_kN(r.model);
+    const double paper_kN = paper_full_kN(s.paper, r.model);
     const std::string paper_R = std::isfinite(paper_kN) ? num(paper_kN, 0) : "n/a";
     if (!r.ok) {
-      md += fmt::format("| {} | {} | {} | {} | — | — | {} | — | 999 | — | {} | {} |\n", r.ref,
+      md += fmt::format("| {} | {} | {} | {} | — | — | {} | — | {} | — | {} | {} |\n", r.ref,
                         md_escape(row->label.empty() ? row->base_case : row->label), r.engine, r.model,
-                        paper_R, paper_ratio_cell(r.model), status_cell(r));
+                        paper_R, paper_rch, paper_ratio_cell(s.paper, r.model), status_cell(r));
       continue;
     }
     md +=
-        fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | 999 | {} | {} | {} |\n", r.ref, scale_label(r),
+        fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", r.ref, scale_label(r),
                     r.engine, r.model, pm(r.mean_N, r.ci_N), pm(r.full_kN, r.full_ci_kN, 1), paper_R,
-                    optnum(r.rch_kN, 0), optnum(r.ratio), paper_ratio_cell(r.model), status_cell(r));
+                    optnum(r.rch_kN, 0), paper_rch, optnum(r.ratio), paper_ratio_cell(s.paper, r.model),
+                    status_cell(r));
   }
   md += "\nHull parameters used for R_CH (full scale, measured on the STL by brash-post):\n\n"
         "| run | L [m] | B [m] | T [m] | alpha [deg] | phi2 [deg] | A_wf [m²] |\n|---|---|---|---|---|---|---|\n";
@@ -752,7 +757,7 @@ void section_setup(Study& s, std::string& md) {
 void section_gap(Study& s, std::string& md) {
   std::string gaps;
   for (const Run* r : completed_runs(s, "paper")) {
-    const double paper = paper_full_kN(r->model);
+    const double paper = paper_full_kN(s.paper, r->model);
     if (r->base_case != "jbc_ia_5kn" || !std::isfinite(paper)) continue;
     gaps += fmt::format(
         "- {} ({} {}): {} kN; the paper's {:.0f} kN is **{:+.1f} %** on it (± {:.1f} % from our "
@@ -856,7 +861,7 @@ void section_paper_histories(Study& s, std::string& md, const fs::path& fig_dir,
     }
   }
   if (lines.empty()) return;
-  using PV = brash::post::PaperValues;
+  const double paper_am = paper_full_kN(s.paper, "added_mass"), paper_drag = paper_full_kN(s.paper, "drag");
   const fs::path dat = fig_dir / "paper_histories.dat", gp = fig_dir / "paper_histories.gp",
                  png = fig_dir / "paper_histories.png";
   {
@@ -889,9 +894,9 @@ void section_paper_histories(Study& s, std::string& md, const fs::path& fig_dir,
       p << fmt::format("'{}' index {} using 1:2 with lines lw 2 title '{}', ", dat.filename().string(), i,
                        lines[i].title);
     p << fmt::format("{} with lines dt 2 lc rgb 'black' title 'paper added mass ({:.0f} kN)', ",
-                     PV::added_mass_full_kN, PV::added_mass_full_kN)
-      << fmt::format("{} with lines dt 3 lc rgb 'black' title 'paper drag ({:.0f} kN)'\n", PV::drag_full_kN,
-                     PV::drag_full_kN);
+                     paper_am, paper_am)
+      << fmt::format("{} with lines dt 3 lc rgb 'black' title 'paper drag ({:.0f} kN)'\n", paper_drag,
+                     paper_drag);
   }
   const std::string err = run_gnuplot(gp, png);
   if (err.empty())
@@ -933,16 +938,15 @@ void section_figures(Study& s, std::string& md, const fs::path& fig_dir, const f
     constexpr long kOurs = 0x5a9fd4, kRule = 0xcd6155, kPaper = 0xc8c8c8;
     std::ofstream d(dat);
     d << "# label  full-scale resistance [kN]  CI95 [kN]  colour\n";
-    using PV = brash::post::PaperValues;
     for (const Run* r : bars)
       d << fmt::format("\"{} {} {}\" {} {} {}\n", r->ref, r->engine, r->model, r->full_kN, r->full_ci_kN, kOurs);
-    d << fmt::format("\"paper added mass\" {} 0 {}\n\"paper drag\" {} 0 {}\n", PV::added_mass_full_kN, kPaper,
-                     PV::drag_full_kN, kPaper);
+    d << fmt::format("\"paper added mass\" {} 0 {}\n\"paper drag\" {} 0 {}\n",
+                     paper_full_kN(s.paper, "added_mass"), kPaper, paper_full_kN(s.paper, "drag"), kPaper);
     std::set<long> rch;
     for (const Run* r : bars)
       if (r->rch_kN && rch.insert(std::lround(*r->rch_kN)).second)
         d << fmt::format("\"FSICR R_CH ours ({})\" {} 0 {}\n", r->ref, *r->rch_kN, kRule);
-    d << fmt::format("\"paper FSICR R_CH\" {} 0 {}\n", PV::fsicr_R_CH_kN, kPaper);
+    if (s.paper.fsicr_R_CH_kN) d << fmt::format("\"paper FSICR R_CH\" {} 0 {}\n", *s.paper.fsicr_R_CH_kN, kPaper);
     std::ofstream p(gp);
     p << "set terminal pngcairo size 1100,650\nset output '" << png.filename().string() << "'\n"
       << "set termoption noenhanced\nset style fill solid 0.85 border -1\nset boxwidth 0.6\nset grid ytics\n"
@@ -1334,9 +1338,16 @@ int main(int argc, char** argv) {
   app.add_option("--summary-json", summary_path, "also write the fits and run statuses as JSON");
   app.add_option("--title", title, "document title")->capture_default_str();
   app.add_option("--study-command", study_command, "the command that ran the whole study (shown at the top)");
+  std::string paper_case = "cases/jbc_ia_5kn/case.yaml";
+  app.add_option("--paper-case", paper_case, "the paper case, whose published values (its references) the "
+                 "document compares with")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   try {
     Study s;
+    if (!fs::exists(paper_case))
+      throw brash::InputError(fmt::format("--paper-case {}: no such file (run from the repository root or name the "
+                                          "paper case's case.yaml)", paper_case));
+    s.paper = brash::load_case(paper_case).references;
     for (auto& row : read_manifest(manifest)) (row.group == "paired" ? s.paired_rows : s.rows).push_back(row);
     for (const auto& row : s.paired_rows)
       s.paired.push_back(load_paired(row, static_cast<int>(s.paired.size()) + 1));

@@ -64,7 +64,7 @@ TEST(CaseLoader, MinimalCaseFillsPaperDefaults) {
   EXPECT_DOUBLE_EQ(c.water.density_kg_m3, 1000);
   EXPECT_DOUBLE_EQ(c.friction.ice_ice, 1.35);
   EXPECT_DOUBLE_EQ(c.friction.ice_hull, 0.1);
-  EXPECT_EQ(c.fluid.model, brash::FluidModel::AddedMass);
+  EXPECT_EQ(c.fluid.model, brash::FluidModel::Both);
   EXPECT_EQ(c.fluid.treatment, brash::Treatment::Implicit);
   EXPECT_EQ(c.run.window_s, (std::array<double, 2>{15.0, 40.0}));
   EXPECT_FALSE(c.hull.band_m.has_value());
@@ -122,7 +122,7 @@ TEST(CaseLoader, PaperCaseLoadsWithPaperNumbers) {
   EXPECT_DOUBLE_EQ(c.ice.thickness_m, 0.03515);
   EXPECT_DOUBLE_EQ(c.ice.diameter_mean_m, 0.017578);
   EXPECT_DOUBLE_EQ(c.ice.porosity, 0.28);
-  EXPECT_EQ(c.fluid.model, brash::FluidModel::AddedMass);
+  EXPECT_EQ(c.fluid.model, brash::FluidModel::Both);
   EXPECT_EQ(c.fluid.treatment, brash::Treatment::Implicit);
   EXPECT_EQ(c.hull.file.filename(), "jbc_panamax_model.stl");
   const Case q = brash::load_case(kRepo / "cases/jbc_quick/case.yaml");
@@ -238,19 +238,57 @@ TEST(CaseLoader, HullFlowDefaultsToStillWaterAndIsRead) {
   EXPECT_NE(brash::dump_case_yaml(c).find("  hull_flow: thin_ship\n"), std::string::npos);
 }
 
+TEST(CaseLoader, FluidModelDefaultsToDragPlusAddedMass) {
+  // both (Eq. 1 + Eq. 2) is the default: a case without fluid.model gets it (the core's FluidParams: test_fluid)
+  const fs::path dir = temp_dir("default_model");
+  EXPECT_EQ(brash::load_case(write_case(dir, "name: d\n")).fluid.model, brash::FluidModel::Both);
+}
+
+TEST(CaseLoader, ReferencesAreReadAndDumped) {
+  const fs::path dir = temp_dir("references");
+  EXPECT_FALSE(brash::load_case(write_case(dir, "name: r\n")).references.declared());
+  const Case c = brash::load_case(write_case(
+      dir, "name: r\nreferences:\n  source: \"A paper\"\n  resistance_full_kN: {both: 393, drag: 378}\n"
+           "  fsicr_R_CH_kN: 999\n  ratio_fsicr_to_sim: {both: 2.54}\n", "r.yaml"));
+  EXPECT_EQ(c.references.source, "A paper");
+  EXPECT_EQ(c.references.resistance_full_kN.at("both"), 393.0);
+  EXPECT_EQ(c.references.resistance_full_kN.at("drag"), 378.0);
+  EXPECT_EQ(c.references.resistance_full_kN.count("added_mass"), 0U);
+  EXPECT_EQ(*c.references.fsicr_R_CH_kN, 999.0);
+  EXPECT_EQ(c.references.ratio_fsicr_to_sim.at("both"), 2.54);
+  // the resolved dump reads back to the same case
+  const Case again = brash::parse_case(brash::dump_case_yaml(c), dir, "[dump]");
+  EXPECT_EQ(again.references, c.references);
+  // the paper case declares the paper's values
+  const Case paper = brash::load_case(fs::path(BRASH_SOURCE_DIR) / "cases/jbc_ia_5kn/case.yaml");
+  EXPECT_EQ(paper.references.resistance_full_kN.at("both"), 393.0);
+  EXPECT_EQ(paper.references.resistance_full_kN.at("drag"), 378.0);
+  EXPECT_EQ(*paper.references.fsicr_R_CH_kN, 999.0);
+  EXPECT_FALSE(brash::load_case(fs::path(BRASH_SOURCE_DIR) / "cases/jbc_quick/case.yaml").references.declared());
+}
+
+TEST(CaseLoaderErrors, ReferencesNeedASourceKnownModelsAndPositiveValues) {
+  expect_error("name: x\nreferences:\n  resistance_full_kN: {both: 393}\n", {"references.source", "missing"});
+  expect_error("name: x\nreferences:\n  source: s\n  resistance_full_kN: {wet: 393}\n",
+               {"references.resistance_full_kN.wet", "unknown key", ":4:"});
+  expect_error("name: x\nreferences:\n  source: s\n  fsicr_R_CH_kN: -1\n", {"references.fsicr_R_CH_kN", "> 0", ":4:"});
+  expect_error("name: x\nreferences:\n  source: s\n  ratio_fsicr_to_sim: {drag: .nan}\n",
+               {"references.ratio_fsicr_to_sim.drag", "finite"});
+}
+
 TEST(CaseLoaderErrors, HullFlowNeedsTheDragAndAKnownName) {
-  // added_mass is the default model: the flow would do nothing, and silently
-  expect_error("name: x\nfluid:\n  hull_flow: thin_ship\n",
-               {"fluid.hull_flow", ":3:", "added_mass has none"});
+  // with added_mass the flow would do nothing, and silently
+  expect_error("name: x\nfluid:\n  model: added_mass\n  hull_flow: thin_ship\n",
+               {"fluid.hull_flow", ":4:", "added_mass has none"});
   expect_error("name: x\nfluid: {model: both, hull_flow: potential}\n",
                {"fluid.hull_flow", "potential", "none | thin_ship"});
 }
 
 TEST(CaseLoader, HullFlowCaseRunsWithTheModelGivenOnTheCommandLine) {
-  // the paper case's template keeps model added_mass; a runner's --model drag makes the hull flow valid, and
+  // a case with model added_mass and the flow is valid once a runner's --model drag overrides the model, and
   // --model added_mass on a drag case with the flow is refused by the final parse
   const fs::path dir = temp_dir("hull_flow_override");
-  const fs::path am = write_case(dir, "name: h\nfluid:\n  hull_flow: thin_ship\n");
+  const fs::path am = write_case(dir, "name: h\nfluid:\n  model: added_mass\n  hull_flow: thin_ship\n");
   const Case c = brash::run::load_case_with_overrides(am, {"drag", "", -1}, "[test]");
   EXPECT_EQ(c.fluid.model, brash::FluidModel::Drag);
   EXPECT_EQ(c.fluid.hull_flow, brash::HullFlow::ThinShip);

@@ -80,11 +80,12 @@ TEST(Evaluate, ImplicitScaleIsMassRatio) {
   const double v = analytic::sphere_volume(r), m = 900 * v;
   const auto out = evaluate(p, Sphere{r, m, Vec3(0, 0, -2 * r), Vec3::Zero()}, FluidState{}, 1e-4);
   EXPECT_NEAR(out.scale.z(), m / (m + 500 * v), 1e-15);
-  EXPECT_NEAR(out.force_N.z(), 1000 * 9.81 * v, 1e-15);  // buoyancy only (added_mass model: no drag)
+  EXPECT_NEAR(out.force_N.z(), 1000 * 9.81 * v, 1e-15);  // buoyancy only (at rest: no drag)
 }
 
 TEST(Evaluate, ExplicitAddsLaggedAccelerationForce) {
   FluidParams p;
+  p.model = FluidModel::AddedMass;  // Eq. 2 alone: no drag on the moving piece
   p.treatment = Treatment::Explicit;
   const double v = analytic::sphere_volume(r), m = 900 * v, dt = 1e-3;
   const auto out = evaluate(p, Sphere{r, m, Vec3(0, 0, -2 * r), Vec3(0.02, 0, 0.01)}, moving(0.0), dt);
@@ -116,6 +117,13 @@ TEST(Drag, SchillerNaumannMatchesStokesAtLowRe) {
 }
 
 TEST(Params, DefaultsAreValid) { EXPECT_NO_THROW(FluidParams{}.validate()); }
+
+TEST(Params, DefaultModelIsDragPlusAddedMass) {
+  const FluidParams p;
+  EXPECT_EQ(p.model, FluidModel::Both);
+  EXPECT_TRUE(p.has_drag());
+  EXPECT_TRUE(p.has_added_mass());
+}
 
 TEST(Params, ProblemsNameTheParameter) {
   FluidParams p;

@@ -119,3 +119,45 @@ TEST(Fsicr, ValidityWarnings) {
 TEST(Fsicr, PowerFormula) {
   EXPECT_NEAR(fsicr_power_kW(1e6, 2.03, 7.0), 2.03 * std::pow(1000.0, 1.5) / 7.0, 1e-9);
 }
+
+// Geometry no hull has (issue 33): each problem named by its parameter and value, through the caller's names.
+TEST(Fsicr, ImpossibleValuesAreNamed) {
+  EXPECT_TRUE(fsicr_impossible_values(panamax(25, 60, 100)).empty());
+  auto p = panamax(25, 60, 0);  // no parallel mid-body: possible
+  EXPECT_TRUE(fsicr_impossible_values(p).empty());
+  const auto one = [](brash::FsicrParams q) {
+    const auto m = fsicr_impossible_values(q);
+    EXPECT_EQ(m.size(), 1u);
+    return m.empty() ? std::string() : m.front();
+  };
+  p = panamax(25, 60, 100);
+  p.B_m = -32;
+  EXPECT_EQ(one(p), "B_m -32: the breadth must be a finite number > 0");
+  p = panamax(25, 60, 100);
+  p.T_m = std::nan("");
+  EXPECT_EQ(one(p), "T_m nan: the draught must be a finite number > 0");
+  p = panamax(95, 60, 100);
+  EXPECT_EQ(one(p), "alpha_deg 95: the waterline angle must be an angle in (0, 90] deg");
+  p = panamax(25, 0, 100);
+  EXPECT_EQ(one(p), "phi2_deg 0: the bow rake must be an angle in (0, 90] deg");
+  p = panamax(25, 60, 100);
+  p.L_bow_m = 250;
+  EXPECT_EQ(one(p), "L_bow_m 250: the bow is longer than the ship (L_m 199.11)");
+  p = panamax(25, 60, 170);
+  EXPECT_EQ(one(p), "L_bow_m 40 + L_par_m 170 = 210: the bow and the parallel mid-body are longer than the ship (L_m 199.11)");
+  p = panamax(25, 60, 100);
+  p.A_wf_m2 = 1300;  // > 40 x 32
+  EXPECT_EQ(one(p), "A_wf_m2 1300: the bow's waterline area is larger than the L_bow_m 40 x B_m 32 = 1280 rectangle that holds it");
+  // Every problem at once, in the caller's names.
+  p = panamax(120, 60, -1);
+  p.L_m = 0;
+  const auto all = fsicr_impossible_values(p, [](std::string_view f) { return "<" + std::string(f) + ">"; });
+  ASSERT_EQ(all.size(), 3u);
+  EXPECT_EQ(all[0].rfind("<L_m> 0: ", 0), 0u) << all[0];
+  EXPECT_EQ(all[1].rfind("<alpha_deg> 120: ", 0), 0u) << all[1];
+  EXPECT_EQ(all[2].rfind("<L_par_m> -1: ", 0), 0u) << all[2];
+  // Outside the validity range only: a warning, not impossible.
+  p = panamax(10, 60, 100);
+  EXPECT_TRUE(fsicr_impossible_values(p).empty());
+  EXPECT_FALSE(fsicr_validity_warnings(p).empty());
+}

@@ -86,14 +86,44 @@ TEST(RunDir, ReportJsonHasEveryKeyWithCorrectValues) {
   EXPECT_NEAR(j["fsicr"]["intermediate"]["H_F_m"].get<double>(), 5.917, 5e-4);
   EXPECT_NEAR(j["ratio_fsicr_to_sim"].get<double>(),
               j["fsicr"]["R_CH_kN"].get<double>() / j["resistance_full_kN"].get<double>(), 1e-12);
-  // the paper states its ratio (2.54) for the added-mass result only; the drag one is 999 / 378
-  EXPECT_NE(brash::post::read_text_file(dir / "report.md")
-                .find("(paper: 2.54 with its added-mass model, stated; 999 / 378 = 2.64 with drag)"),
-            std::string::npos);
+  // the synthetic case declares no published values: the report compares with none
+  EXPECT_TRUE(j["reference"].is_null()) << j["reference"].dump();
+  EXPECT_FALSE(j.contains("paper_full_kN"));
+  const std::string md = brash::post::read_text_file(dir / "report.md");
+  for (const char* paper : {"393", "378", "999", "2.54", "Published reference", "aper"})
+    EXPECT_EQ(md.find(paper), std::string::npos) << paper;
   EXPECT_EQ(j["wall_time_s"].get<double>(), 123.5);
   EXPECT_EQ(j["particle_steps"].get<double>(), 4.2e9);
   EXPECT_EQ(j["exits"].get<long>(), 0);  // no meta.json "exits": none
   for (const auto* f : {"report.md", "force_history.csv", "blocking.csv"}) EXPECT_TRUE(fs::exists(dir / f)) << f;
+  fs::remove_all(dir);
+}
+
+// A case that declares published values (references:) gets them beside its own, for its fluid model only;
+// the ratio is the stated one where declared, else the source's R_CH over its resistance.
+TEST(RunDir, PublishedReferencesComeFromTheCase) {
+  const auto dir = scratch("references");
+  SyntheticRun r;
+  write_synthetic_run(dir, r);
+  std::ofstream(dir / "case.yaml", std::ios::app) << "references:\n  source: \"Test source, Fig. 6\"\n"
+                                                      "  resistance_full_kN: {added_mass: 40.0, drag: 50.0}\n"
+                                                      "  fsicr_R_CH_kN: 100.0\n"
+                                                      "  ratio_fsicr_to_sim: {both: 2.54}\n";
+  const auto j = run_cli(dir);  // meta.json: fluid model added_mass
+  ASSERT_TRUE(j["reference"].is_object()) << j.dump(2);
+  EXPECT_EQ(j["reference"]["source"], "Test source, Fig. 6");
+  EXPECT_EQ(j["reference"]["fluid_model"], "added_mass");
+  EXPECT_EQ(j["reference"]["resistance_full_kN"].get<double>(), 40.0);
+  EXPECT_EQ(j["reference"]["fsicr_R_CH_kN"].get<double>(), 100.0);
+  EXPECT_EQ(j["reference"]["ratio_fsicr_to_sim"].get<double>(), 2.5);  // 100 / 40: no stated ratio for added_mass
+  EXPECT_FALSE(j["reference"]["ratio_stated"].get<bool>());
+  EXPECT_NEAR(j["reference"]["resistance_over_reference"].get<double>(),
+              j["resistance_full_kN"].get<double>() / 40.0, 1e-12);
+  const std::string md = brash::post::read_text_file(dir / "report.md");
+  EXPECT_NE(md.find("## Published reference (Test source, Fig. 6)"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 40 kN (this run "), std::string::npos) << md;
+  EXPECT_NE(md.find("| 2.50 (its R_CH over its resistance) |"), std::string::npos) << md;
+  EXPECT_EQ(md.find("50 kN"), std::string::npos) << "the drag value is not this run's model";
   fs::remove_all(dir);
 }
 

@@ -49,7 +49,9 @@ std::string read(const fs::path& p) {
 }
 
 int run_tool(const fs::path& dir, const std::string& args) {
-  const std::string cmd = fmt::format("'{}' {} > '{}' 2>&1", BRASH_STUDY_REPORT_EXE, args, (dir / "tool.log").string());
+  // the paper's values come from the paper case's references, as in the repository
+  const std::string cmd = fmt::format("'{}' --paper-case '{}/cases/jbc_ia_5kn/case.yaml' {} > '{}' 2>&1",
+                                      BRASH_STUDY_REPORT_EXE, BRASH_SOURCE_DIR, args, (dir / "tool.log").string());
   return std::system(cmd.c_str());
 }
 

@@ -1,6 +1,7 @@
-// Bad command lines of the brash tools: unknown options, missing or wrong case/run folders.
-// Each must exit non-zero and say which option or path is wrong (CLI11 exits 109 on an extra argument,
-// 105/106 on a failed validation; our own errors exit 1).
+// Bad command lines of the brash tools: unknown options, missing or wrong case/run folders, impossible FSICR
+// geometry, a packing that is not the case's ice. Each must exit non-zero and say which option, path or line is
+// wrong (CLI11 exits 109 on an extra argument, 105/106 on a failed validation; our own errors exit 1, input
+// errors 2).
 #include <gtest/gtest.h>
 
 #include "catalogue.hpp"
@@ -62,3 +63,43 @@ TEST_P(Cli, RejectedWithClearMessage) {
 
 INSTANTIATE_TEST_SUITE_P(BadArguments, Cli, ::testing::ValuesIn(commands()),
                          [](const ::testing::TestParamInfo<Entry>& i) { return i.param.name; });
+
+#ifdef BRASH_POST_EXE
+// brash-post fsicr with geometry no hull has (issue 33) printed "R_CH = -nan kN" (negative beam) or a number
+// with a validity-range warning, and exited 0. Impossible values are input errors naming the option (exit 2,
+// nothing computed); values outside the rule's validity range stay warnings.
+TEST(CliFsicr, ImpossibleGeometryIsAnErrorNamingTheOption) {
+  const std::string good = q(BRASH_POST_EXE) +
+                           " fsicr --L 199.11 --B 32 --T 11.733 --alpha 25 --phi2 60 --Lpar 100 --Lbow 40 --Awf 900";
+  const struct {
+    const char *from, *to, *named;
+  } bad[] = {
+      {"--B 32", "--B -32", "--B -32: "},
+      {"--L 199.11", "--L 0", "--L 0: "},
+      {"--T 11.733", "--T nan", "--T nan: "},
+      {"--T 11.733", "--T inf", "--T inf: "},
+      {"--Awf 900", "--Awf -900", "--Awf -900: "},
+      {"--Lbow 40", "--Lbow 250", "--Lbow 250: "},
+      {"--Lpar 100", "--Lpar 210", "--Lpar 210: "},
+      {"--Lpar 100", "--Lpar 170", "--Lbow 40 + --Lpar 170"},
+      {"--alpha 25", "--alpha 95", "--alpha 95: "},
+      {"--alpha 25", "--alpha 0", "--alpha 0: "},
+      {"--phi2 60", "--phi2 -10", "--phi2 -10: "},
+      {"--phi2 60", "--phi2 60 --phi1 120", "--phi1 120: "},
+  };
+  const fs::path dir = fresh_dir("fsicr_impossible");
+  for (const auto& b : bad) {
+    const Outcome o = run_command(dir, replace_all(good, b.from, b.to));
+    EXPECT_EQ(o.exit_code, 2) << b.to << ": " << o.message;
+    EXPECT_NE(o.message.find(b.named), std::string::npos) << b.to << ": " << o.message;
+    EXPECT_EQ(o.message.find("R_CH"), std::string::npos) << b.to << ": " << o.message;  // nothing computed
+  }
+  // Possible, but outside the rule's validity range (alpha 10 deg, draught 3 m): R_CH with warnings.
+  const Outcome w = run_command(dir, replace_all(replace_all(good, "--alpha 25", "--alpha 10"), "--T 11.733", "--T 3"));
+  EXPECT_EQ(w.exit_code, 0) << w.message;
+  EXPECT_NE(w.message.find("R_CH = "), std::string::npos) << w.message;
+  EXPECT_NE(w.message.find("warning: alpha_deg = 10 outside the FSICR validity range"), std::string::npos) << w.message;
+  EXPECT_NE(w.message.find("warning: T_m = 3 outside the FSICR validity range"), std::string::npos) << w.message;
+  fs::remove_all(dir);
+}
+#endif

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -108,7 +109,7 @@ struct ContactSpec {
 };
 
 struct FluidSpec {
-  FluidModel model = FluidModel::AddedMass;
+  FluidModel model = FluidModel::Both;  // Eq. 1 + Eq. 2 (docs/physics.md)
   Treatment treatment = Treatment::Implicit;
   double drag_coefficient = 0.44;
   DragLaw drag_law = DragLaw::Constant;
@@ -165,6 +166,17 @@ struct FsicrOverrides {
   bool operator==(const FsicrOverrides&) const = default;
 };
 
+// Published values a case's results are compared with (docs/case_format.md, "references"). A case without
+// the section declares none, and its report compares with nothing. Full scale; keyed by fluid-model name.
+struct ReferenceSpec {
+  std::string source;                                   // where the values are published
+  std::map<std::string, double> resistance_full_kN;     // per fluid model: drag | added_mass | both
+  std::optional<double> fsicr_R_CH_kN;                  // the source's FSICR channel resistance
+  std::map<std::string, double> ratio_fsicr_to_sim;     // per fluid model, as the source states it
+  bool declared() const { return !resistance_full_kN.empty() || fsicr_R_CH_kN || !ratio_fsicr_to_sim.empty(); }
+  bool operator==(const ReferenceSpec&) const = default;
+};
+
 struct Case {
   std::string name;
   std::string description;
@@ -180,6 +192,7 @@ struct Case {
   FsicrOverrides fsicr;
   SpeedupSpec speedups;
   GuardSpec guards;
+  ReferenceSpec references;
   bool operator==(const Case&) const = default;
 };
 

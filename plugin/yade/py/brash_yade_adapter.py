@@ -28,7 +28,7 @@ _REGISTRY_NAME = "_brash_yade_adapters"
 class FluidAdapter:
     """Fluid forces of the brash core on the given YADE sphere ids (same set for the whole run)."""
 
-    def __init__(self, ids, model="added_mass", treatment="implicit", cd=0.44, drag_law="constant",
+    def __init__(self, ids, model="both", treatment="implicit", cd=0.44, drag_law="constant",
                  nu=1.79e-6, ca_table="table1", water_level=0.0, water_density=1000.0, g=9.81):
         from yade import O  # imported here so the module can be imported (for docs) outside yade
         self.O = O

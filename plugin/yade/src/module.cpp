@@ -276,7 +276,7 @@ PYBIND11_MODULE(brash_yade, mod) {
              return Fluid(make_params(model, treatment, cd, drag_law, nu, ca_table, water_level, water_density, g,
                                       apply_gravity));
            }),
-           py::arg("model") = "added_mass", py::arg("treatment") = "implicit", py::arg("cd") = 0.44,
+           py::arg("model") = "both", py::arg("treatment") = "implicit", py::arg("cd") = 0.44,
            py::arg("drag_law") = "constant", py::arg("nu") = 1.79e-6, py::arg("ca_table") = "table1",
            py::arg("water_level") = 0.0, py::arg("water_density") = 1000.0, py::arg("g") = 9.81,
            py::arg("apply_gravity") = true)

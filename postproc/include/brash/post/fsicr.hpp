@@ -2,6 +2,7 @@
 // Formula, constants and confidence tags: ../shared/notes/fsicr.md. Every constant lives in
 // FsicrConstants so a corrected rule text changes one place.
 #pragma once
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -49,6 +50,15 @@ double fsicr_psi_deg(double alpha_deg, double phi2_deg);
 FsicrResult fsicr_channel_resistance(const FsicrParams& p, IceClass ice_class,
                                      const FsicrConstants& k = {},
                                      std::optional<double> psi_override_deg = std::nullopt);
+
+// Values no hull has, one text per problem naming the parameter(s) through `name` (an FsicrParams field such as
+// "B_m" -> how the caller calls it, e.g. "--B"; default: the field name) and the value: non-finite values, lengths
+// and areas <= 0 (L_par_m >= 0: a ship may have no parallel mid-body), angles outside (0, 90] deg, L_bow_m or
+// L_par_m longer than L_m or both together longer than it, A_wf_m2 larger than the L_bow_m x B_m rectangle that
+// holds it. The formula's result would be meaningless (a negative beam gives R_CH = nan): callers refuse them.
+// Values inside these bounds but outside the rule's validity range are fsicr_validity_warnings.
+std::vector<std::string> fsicr_impossible_values(
+    const FsicrParams& p, const std::function<std::string(std::string_view field)>& name = {});
 
 // Human-readable warnings for parameters outside the formula's validity range.
 std::vector<std::string> fsicr_validity_warnings(const FsicrParams& p);

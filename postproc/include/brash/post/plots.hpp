@@ -31,6 +31,7 @@ struct CompareRow {
   std::string run, engine, fluid_model;
   double speed_m_s = 0, mean_N = 0, ci95_N = 0, full_kN = 0, full_ci95_kN = 0;
   double R_CH_kN = NAN, ratio = NAN;
+  double reference_full_kN = NAN;  // the case's published resistance for this fluid model (NaN: none declared)
   bool complete = false;
 };
 CompareRow compare_row(const RunAnalysis& a);

@@ -26,7 +26,21 @@ struct PostCase {
   std::map<std::string, double> fsicr_overrides;
   std::optional<double> psi_override_deg;  // otherwise psi = atan(tan phi2 / sin alpha)
   bool farfield_window_alone = false;  // speedups.farfield with no wake: idle ice was an immovable wall (biased)
+  // references: the published values the case declares (none: the report compares with nothing), full scale,
+  // keyed by fluid model
+  std::string reference_source;
+  std::map<std::string, double> reference_full_kN, reference_ratio_fsicr_to_sim;
+  std::optional<double> reference_fsicr_R_CH_kN;
 };
+
+// The case's published values for one fluid model; empty when the case declares none for it.
+struct PublishedReference {
+  std::string source, fluid_model;
+  std::optional<double> resistance_full_kN, fsicr_R_CH_kN;
+  std::optional<double> ratio_fsicr_to_sim;  // stated by the source, or its R_CH over its resistance
+  bool ratio_stated = false;
+};
+std::optional<PublishedReference> published_reference(const PostCase& c, const std::string& fluid_model);
 
 PostCase read_post_case(const std::filesystem::path& case_yaml);
 

@@ -20,17 +20,6 @@
 
 namespace brash::post {
 
-// Paper values (Kogakuin; physics.md) shown beside ours, never used in computations.
-struct PaperValues {
-  static constexpr double added_mass_full_kN = 393.0;
-  static constexpr double drag_full_kN = 378.0;
-  static constexpr double fsicr_R_CH_kN = 999.0;
-  // The paper states R_CH / R_sim = 2.54 for its added-mass result (999 / 393); for drag it gives the two
-  // numbers only, so its ratio there is ours to derive (999 / 378 = 2.64).
-  static constexpr double stated_ratio_added_mass = 2.54;
-  static constexpr double derived_ratio_drag = fsicr_R_CH_kN / drag_full_kN;
-};
-
 struct WindowSelection {
   std::array<double, 2> requested_s{};
   std::array<double, 2> used_s{};
@@ -75,6 +64,7 @@ struct RunAnalysis {
   double resistance_full_kN = 0, resistance_full_ci95_kN = 0;
   FsicrSummary fsicr;
   std::optional<double> ratio_fsicr_to_sim;
+  std::optional<PublishedReference> reference;  // the case's published values for this run's fluid model
   std::optional<BandCheck> band;   // set by brash-post's report when the case has a contact band and snapshots
   std::vector<std::string> notes;  // everything a reader must know (truncation, fallbacks, ...)
 };
@@ -83,6 +73,9 @@ struct RunAnalysis {
 inline constexpr std::size_t kMinTrendSamples = 64;
 
 RunAnalysis analyze_run(const std::filesystem::path& run_dir);
+
+// The run's fluid model: meta.json's, else the case's.
+std::string run_fluid_model(const RunAnalysis& a);
 
 nlohmann::ordered_json report_json(const RunAnalysis& a);
 std::string report_markdown(const RunAnalysis& a);

@@ -1,5 +1,7 @@
 // Fluid-model parameters shared by every engine adapter, with self-validation.
-// Defaults are the paper's model (physics.md): Table 1 added mass, implicit treatment, C_D 0.44.
+// Defaults are the paper's added-mass model as its results show it (physics.md): drag (Eq. 1, C_D 0.44) plus
+// added mass (Eq. 2, Table 1), implicit treatment. FluidModel::AddedMass (Eq. 2 alone, the literal reading of
+// the paper's Methods sentence) and FluidModel::Drag stay selectable.
 #pragma once
 #include <Eigen/Core>
 
@@ -47,7 +49,7 @@ struct FluidParams {
   double gravity_m_s2 = 9.81;
   bool apply_gravity = false;                 // add -m g here (else the engine's own gravity does)
   Vec3 flow_velocity_m_s = Vec3::Zero();
-  FluidModel model = FluidModel::AddedMass;
+  FluidModel model = FluidModel::Both;
   Treatment treatment = Treatment::Implicit;
   DragLaw drag_law = DragLaw::Constant;
   double drag_coefficient = 0.44;
