@@ -527,13 +527,21 @@ void check_no_overlap(const fs::path& file, const std::vector<Sphere>& s, const 
 
 }  // namespace
 
-std::vector<Sphere> read_packing_csv(const fs::path& file) {
+namespace {
+
+// A packing file's pieces with the line and the id each came from.
+struct PackingRows {
+  std::vector<Sphere> spheres;
+  std::vector<std::size_t> lines;
+  std::vector<double> ids;
+};
+
+PackingRows read_rows(const fs::path& file) {
   if (fs::is_directory(file)) throw InputError(file.string() + ": is a directory, not a packing file");
   std::ifstream in(file);
   if (!in) throw InputError(file.string() + ": cannot open packing file");
-  std::vector<Sphere> out;
-  std::vector<std::size_t> lines;
-  std::vector<double> ids;
+  PackingRows rows;
+  std::unordered_map<double, std::size_t> id_line;  // id -> the line that gave it first
   std::string line;
   bool header = false;
   for (std::size_t ln = 1; std::getline(in, line); ++ln) {
@@ -560,13 +568,59 @@ std::vector<Sphere> read_packing_csv(const fs::path& file) {
       p = next + 1;
     }
     if (!(v[4] > 0)) throw InputError(fmt::format("{}:{}: diameter must be > 0", file.string(), ln));
-    out.push_back({v[1], v[2], v[3], v[4]});
-    lines.push_back(ln);
-    ids.push_back(v[0]);
+    // The engines number the pieces by these ids (particle files, guard messages): one id, one piece.
+    if (const auto [at, fresh] = id_line.emplace(v[0] == 0 ? 0.0 : v[0], ln); !fresh)
+      throw InputError(fmt::format("{}:{}: piece id {:g} is given twice (first at line {}); ids must be unique",
+                                   file.string(), ln, v[0], at->second));
+    rows.spheres.push_back({v[1], v[2], v[3], v[4]});
+    rows.lines.push_back(ln);
+    rows.ids.push_back(v[0]);
   }
   if (!header) throw InputError(file.string() + ": no 'id,x,y,z,diameter' header");
-  check_no_overlap(file, out, lines, ids);
-  return out;
+  check_no_overlap(file, rows.spheres, rows.lines, rows.ids);
+  return rows;
+}
+
+}  // namespace
+
+std::vector<Sphere> read_packing_csv(const fs::path& file) { return read_rows(file).spheres; }
+
+std::vector<Sphere> read_case_packing(const Case& c) {
+  const fs::path& file = c.ice.packing_file;
+  PackingRows rows = read_rows(file);
+  const double L = c.channel.length_m, half_w = 0.5 * c.channel.width_m, level = c.water.level_m;
+  const double above = kPackingMaxBottomAboveWaterOverD * c.ice.diameter_mean_m;
+  const double below = kPackingMaxCentreBelowWaterOverThickness * c.ice.thickness_m;
+  for (std::size_t n = 0; n < rows.spheres.size(); ++n) {
+    const Sphere& b = rows.spheres[n];
+    const double r = 0.5 * b.diameter_m, tol = kPackingChannelToleranceOverD * b.diameter_m;
+    const auto where = [&] {
+      return fmt::format("{}:{}: piece id {:g} (x {:g}, y {:g}, z {:g} m, d {:g} m)", file.string(), rows.lines[n],
+                         rows.ids[n], b.x_m, b.y_m, b.z_m, b.diameter_m);
+    };
+    std::string out;
+    if (b.x_m - r < -tol)
+      out = fmt::format("x - d/2 = {:g} m < 0", b.x_m - r);
+    else if (b.x_m + r > L + tol)
+      out = fmt::format("x + d/2 = {:g} m > channel.length_m = {:g} m", b.x_m + r, L);
+    else if (std::abs(b.y_m) + r > half_w + tol)
+      out = fmt::format("|y| + d/2 = {:g} m > channel.width_m / 2 = {:g} m", std::abs(b.y_m) + r, half_w);
+    if (!out.empty())
+      throw InputError(fmt::format("{} lies outside the channel [0, {:g}] x [{:g}, {:g}] m: {}; every piece must lie "
+                                   "inside it (brash-pack writes the case's packing)",
+                                   where(), L, -half_w, half_w, out));
+    if (b.z_m - r > level + above)
+      throw InputError(fmt::format(
+          "{} is far above the water: its bottom is {:g} m above water.level_m = {:g} m, more than {:g} x "
+          "ice.diameter_mean_m = {:g} m; a packing's pieces float in the water (brash-pack writes the case's packing)",
+          where(), b.z_m - r - level, level, kPackingMaxBottomAboveWaterOverD, above));
+    if (b.z_m < level - below)
+      throw InputError(fmt::format(
+          "{} is far below the water: its centre is {:g} m below water.level_m = {:g} m, more than {:g} x "
+          "ice.thickness_m = {:g} m; a packing's pieces float in the water (brash-pack writes the case's packing)",
+          where(), level - b.z_m, level, kPackingMaxCentreBelowWaterOverThickness, below));
+  }
+  return std::move(rows.spheres);
 }
 
 }  // namespace brash

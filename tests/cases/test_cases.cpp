@@ -54,6 +54,23 @@ TEST(CaseFolders, EveryCommittedCaseLoads) {
   EXPECT_GE(n, 2);
 }
 
+// Every committed case's generated packing passes the check every runner makes before it starts (issue 33:
+// pieces in the channel, floating in the water, unique ids; brash::read_case_packing).
+TEST(CaseFolders, GeneratedPackingsPassTheRunnersCheck) {
+  const fs::path dir = temp_dir("generated_packings");
+  int n = 0;
+  for (const auto& e : fs::directory_iterator(kRepo / "cases")) {
+    if (!fs::exists(e.path() / "case.yaml")) continue;
+    brash::Case c = brash::load_case(e.path() / "case.yaml");
+    c.ice.packing_file = dir / (c.name + ".csv");
+    brash::write_packing_csv(c.ice.packing_file, brash::generate_packing(brash::packing_request(c, c.name)));
+    EXPECT_NO_THROW(brash::read_case_packing(c)) << c.name;
+    ++n;
+  }
+  EXPECT_GE(n, 2);
+  fs::remove_all(dir);
+}
+
 TEST(CaseFolders, QuickCaseIsSmallAndShort) {
   const brash::Case c = brash::load_case(kRepo / "cases/jbc_quick/case.yaml");
   EXPECT_DOUBLE_EQ(c.ship.speed_m_s, 0.482);
@@ -74,7 +91,7 @@ TEST(BrashPack, WritesCsvAndJsonForACase) {
   const fs::path csv = dir / "generated/packing.csv", json = dir / "generated/packing.json";
   ASSERT_TRUE(fs::exists(csv));
   ASSERT_TRUE(fs::exists(json));
-  const auto spheres = brash::read_packing_csv(csv);
+  const auto spheres = brash::read_case_packing(brash::load_case(dir / "case.yaml"));  // what the runners read
   const auto j = nlohmann::json::parse(slurp(json));
   EXPECT_EQ(j.at("count").get<std::size_t>(), spheres.size());
   EXPECT_EQ(j.at("mode").get<std::string>(), "volume");

@@ -57,6 +57,24 @@ Entry bad_packing(std::string name, std::string csv, std::vector<std::string> ex
           std::move(expect)};
 }
 
+// A case's packing (brash::read_case_packing, what every runner reads): the YADE smoke case's ice (35 mm pieces,
+// 0.07 m thick) in a 0.2 x 1.6 m channel, water at z = 0; packing.csv holds one good piece and `row` (line 3).
+const std::string kPackedCase =
+    "name: packed\nchannel: {length_m: 0.2, width_m: 1.6}\n"
+    "ice: {thickness_m: 0.07, diameter_mean_m: 0.035, diameter_sd_m: 0.00175, packing_file: packing.csv}\n"
+    "contact: {youngs_modulus_pa: 5.0e6}\n"
+    "run: {duration_s: 0.2, timestep_s: 1.0e-4, output_interval_s: 0.01, window_s: [0.1, 0.2]}\n";
+
+Entry bad_case_packing(std::string name, std::string row, std::vector<std::string> expect) {
+  return {std::move(name),
+          [row](const fs::path& dir) {
+            write_file(dir / "case.yaml", kPackedCase);
+            write_file(dir / "packing.csv", "id,x,y,z,diameter\n1,0.1,0,0,0.035\n" + row + "\n");
+            return library_call([&] { brash::read_case_packing(brash::load_case(dir / "case.yaml")); });
+          },
+          std::move(expect)};
+}
+
 // A closed, outward 1 x 0.5 x 0.4 box (keel at z = 0), scaled by `s`.
 brash::hull::Mesh box_mesh(double s = 1.0) {
   brash::hull::Mesh m;
@@ -221,6 +239,26 @@ std::vector<Entry> catalogue() {
   // New check (issue 10): overlapping spheres were read silently before.
   c.push_back(bad_packing("packing_overlapping_spheres", ph + "1,0.1,0.2,0,0.02\n2,0.5,0.5,0,0.02\n3,0.11,0.2,0,0.02\n",
                           {"{dir}/packing.csv:5", "sphere id 3 overlaps sphere id 1 (line 3)", "must not overlap"}));
+  // Two pieces with one id (issue 33) were read silently.
+  c.push_back(bad_packing("packing_duplicate_id", ph + "1,0.1,0.2,0,0.02\n2,0.5,0.5,0,0.02\n1,0.9,0.2,0,0.02\n",
+                          {"{dir}/packing.csv:5", "piece id 1 is given twice", "first at line 3"}));
+  // Pieces that cannot be the case's ice (issue 33): they reached LIGGGHTS and stopped it with "Did not assign all
+  // atoms correctly" (outside its box), or ran. Each piece must lie in the channel and float in the water.
+  c.push_back(bad_case_packing("packing_piece_beyond_the_channel_end", "2,1.2,0,0,0.035",
+                               {"{dir}/packing.csv:3", "piece id 2 (x 1.2, y 0, z 0 m, d 0.035 m)",
+                                "outside the channel [0, 0.2] x [-0.8, 0.8] m", "x + d/2 = 1.2175 m > channel.length_m = 0.2 m"}));
+  c.push_back(bad_case_packing("packing_piece_before_the_channel_start", "2,0.01,0.3,0,0.035",
+                               {"{dir}/packing.csv:3", "outside the channel", "x - d/2 = -0.0075 m < 0"}));
+  c.push_back(bad_case_packing("packing_piece_through_a_side_wall", "2,0.1,-0.79,0,0.035",
+                               {"{dir}/packing.csv:3", "outside the channel", "|y| + d/2 = 0.8075 m > channel.width_m / 2 = 0.8 m"}));
+  c.push_back(bad_case_packing("packing_piece_far_above_the_water", "2,0.1,0.3,0.4,0.035",
+                               {"{dir}/packing.csv:3", "piece id 2", "far above the water", "0.3825 m above water.level_m = 0 m",
+                                "1 x ice.diameter_mean_m = 0.035 m"}));
+  c.push_back(bad_case_packing("packing_piece_far_below_the_water", "2,0.1,0.3,-0.6,0.035",
+                               {"{dir}/packing.csv:3", "piece id 2", "far below the water", "0.6 m below water.level_m = 0 m",
+                                "5 x ice.thickness_m = 0.35 m"}));
+  c.push_back(bad_case_packing("packing_duplicate_id_in_a_case", "1,0.1,0.3,0,0.035",
+                               {"{dir}/packing.csv:3", "piece id 1 is given twice (first at line 2)"}));
   c.push_back({"packing_missing_file",
                [](const fs::path& dir) { return library_call([&] { brash::read_packing_csv(dir / "none.csv"); }); },
                {"{dir}/none.csv", "cannot open packing file"}});
@@ -381,4 +419,15 @@ TEST(Catalogue, GeneratedPackingReadsBack) {
   const fs::path dir = fresh_dir("good_packing");
   brash::write_packing_csv(dir / "packing.csv", p);
   EXPECT_EQ(brash::read_packing_csv(dir / "packing.csv").size(), p.spheres.size());
+}
+
+// The case check's bounds take what a packing may hold (issue 33): pieces touching an end and a side wall, one
+// whose bottom is just under a diameter above the water, one just under 5 ice thicknesses down.
+TEST(Catalogue, CasePackingNearTheBoundsReads) {
+  const fs::path dir = fresh_dir("packing_near_bounds");
+  write_file(dir / "case.yaml", kPackedCase);
+  write_file(dir / "packing.csv",
+             "id,x,y,z,diameter\n1,0.0175,0.7825,0,0.035\n2,0.1825,-0.7825,0.05,0.035\n3,0.1,0.3,-0.34,0.035\n");
+  EXPECT_EQ(brash::read_case_packing(brash::load_case(dir / "case.yaml")).size(), 3u);
+  fs::remove_all(dir);
 }

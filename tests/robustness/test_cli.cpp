@@ -64,6 +64,34 @@ TEST_P(Cli, RejectedWithClearMessage) {
 INSTANTIATE_TEST_SUITE_P(BadArguments, Cli, ::testing::ValuesIn(commands()),
                          [](const ::testing::TestParamInfo<Entry>& i) { return i.param.name; });
 
+// A packing that cannot be the case's ice (issue 33): a piece beyond the channel's end, one far above the water,
+// two pieces with one id. They used to reach LIGGGHTS (and stop it with "Did not assign all atoms correctly")
+// or run; brash-liggghts-run now refuses them naming the packing file and line, before it makes the run
+// directory.
+TEST(CliPacking, RunnerRefusesAPackingThatIsNotTheCasesIceBeforeWritingAnything) {
+  const fs::path smoke = fs::path(BRASH_SOURCE_DIR) / "tests/yade/smoke_case/case.yaml";  // channel 0.2 x 1.6 m
+  const struct {
+    const char *name, *row, *problem;
+  } bad[] = {
+      {"beyond_the_channel_end", "2,1.2,0,0,0.035", "outside the channel"},
+      {"far_above_the_water", "2,0.1,0.3,0.4,0.035", "above the water"},
+      {"duplicate_id", "1,0.1,0.3,0,0.035", "piece id 1 is given twice"},
+  };
+  for (const auto& b : bad) {
+    const fs::path dir = fresh_dir(std::string("runner_packing_") + b.name);
+    fs::create_directories(dir / "case");
+    fs::copy_file(smoke, dir / "case/case.yaml");
+    write_file(dir / "case/packing.csv", std::string("id,x,y,z,diameter\n1,0.1,0,0,0.035\n") + b.row + "\n");
+    const Outcome o = run_command(dir, q(BRASH_LIGGGHTS_RUN_EXE) + " '" + (dir / "case").string() +
+                                           "' --prepare-only --no-post --out '" + (dir / "run").string() + "'");
+    EXPECT_NE(o.exit_code, 0) << b.name << ": " << o.message;
+    EXPECT_NE(o.message.find((dir / "case/packing.csv:3: ").string()), std::string::npos) << b.name << ": " << o.message;
+    EXPECT_NE(o.message.find(b.problem), std::string::npos) << b.name << ": " << o.message;
+    EXPECT_FALSE(fs::exists(dir / "run")) << b.name << ": a run directory was written";
+    fs::remove_all(dir);
+  }
+}
+
 #ifdef BRASH_POST_EXE
 // brash-post fsicr with geometry no hull has (issue 33) printed "R_CH = -nan kN" (negative beam) or a number
 // with a validity-range warning, and exited 0. Impossible values are input errors naming the option (exit 2,

@@ -3,8 +3,9 @@ JBC bow, contact hull = waterline band): one scenario per guard; each must stop 
 piece and the cause, with meta.json failed and the outputs up to the stop readable.
    python3 guard_stop.py BRASH_YADE_RUN SMOKE_CASE_DIR WORK_DIR SCENARIO  -> exit 0 = pass
 Scenarios: under_band (a piece below the band, swept into the full hull), kinetic_energy (explicit added mass
-with Ca_z = 2 diverges), box (a piece below the domain floor), zmax (a piece above zmax), timestep (a 5 mm
-piece in the packing: dt too large for its contact stiffness)."""
+with Ca_z = 2 diverges), timestep (a 5 mm piece in the packing: dt too large for its contact stiffness); box (a
+piece below the domain floor) and zmax (a piece above zmax) cannot be the case's ice: the runner refuses their
+packing naming its file and line before it makes the run directory (brash::read_case_packing)."""
 import json
 import os
 import re
@@ -24,11 +25,12 @@ SCENARIOS = {
     "kinetic_energy": ([], [("treatment: implicit", "treatment: explicit"), ("ca_table: table1", "ca_table: text")],
                        "0.05", "[0-9]+", r"(runaway kinetic energy: [0-9.e+]+ J > ke_max = 1\.428 J|non-finite)",
                        "positive"),
-    "box": (["721,0.1,0,-0.6,0.035"], [], "0.02", "721", r"left the box: z = -0\.6 < zlo = -0\.4812[0-9]* \(m\)",
-            "zero"),
+    "box": (["721,0.1,0,-0.6,0.035"], [], "0.02", "721",
+            r"is far below the water: its centre is 0\.6 m below water\.level_m = 0 m", "refused"),
     "zmax": (["721,0.1,0,0.4,0.035"], [], "0.02", "721",
-             r"above zmax: z = 0\.4 > 0\.35 m \(jumped out of the water\)", "zero"),
-    "timestep": (["721,0.1,0.3,0.2,0.005"], [], "0.02", "721",
+             r"is far above the water: its bottom is 0\.3825 m above water\.level_m = 0 m", "refused"),
+    # resting on the bed (clear of its pieces by 0.2 mm)
+    "timestep": (["721,0.1,0.3,-0.0045,0.005"], [], "0.02", "721",
                  r"timestep 0\.0001 s is too large for the contact stiffness: [0-9]+ % of the Rayleigh time", "zero"),
 }
 rows, edits, duration, piece, cause, step_check = SCENARIOS[scenario]
@@ -57,6 +59,15 @@ def need(ok, what):
         bad.append(what)
 
 
+if step_check == "refused":  # row 721 is line 723 of the packing
+    need(p.returncode == 1, "exit code 1 (got %d)" % p.returncode)
+    need(re.search(r"packing\.csv:723: piece id %s \(.*\) %s" % (piece, cause), p.stdout) is not None,
+         "the error names the packing's line, the piece and the problem")
+    need(not os.path.exists(run), "no run directory")
+    if bad:
+        sys.exit(1)
+    shutil.rmtree(work, ignore_errors=True)
+    sys.exit(0)
 need(p.returncode == 1, "exit code 1 (got %d)" % p.returncode)
 meta = json.load(open(os.path.join(run, "meta.json")))
 need(meta.get("status") == "failed", "meta.json status failed")

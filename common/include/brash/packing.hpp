@@ -90,7 +90,22 @@ std::string packing_csv(const Packing& p);
 void write_packing_csv(const std::filesystem::path& file, const Packing& p);
 std::string packing_json(const PackingStats& s);
 void write_packing_json(const std::filesystem::path& file, const PackingStats& s);
-// Reads a packing CSV (skipping '#' lines and the header); InputError naming file and line on error.
+// Reads a packing CSV (skipping '#' lines and the header); InputError naming file and line on error
+// (a value that is not a finite number, a diameter <= 0, an id given twice, overlapping pieces).
 std::vector<Sphere> read_packing_csv(const std::filesystem::path& file);
+
+// What a case's packing must hold besides: every piece inside the channel [0, L] x [-W/2, W/2] (a piece may poke
+// through a wall or an end by this fraction of its diameter: brash-pack's 9-decimal rounding, <= 5e-10 m), no piece
+// whose bottom is more than this many ice.diameter_mean_m above the water (brash-pack's beds at floating equilibrium:
+// at most 0.22 d_mean in the repository's cases), none whose centre is more than this many ice.thickness_m below it
+// (theirs: at most 1.3; the guards' domain reaches at least 6 thicknesses down, their zmax 5 up).
+inline constexpr double kPackingChannelToleranceOverD = 1e-4;
+inline constexpr double kPackingMaxBottomAboveWaterOverD = 1.0;
+inline constexpr double kPackingMaxCentreBelowWaterOverThickness = 5.0;
+
+// Reads the case's packing (c.ice.packing_file) as read_packing_csv and checks every piece against the case as above:
+// InputError naming the packing file, the line, the piece and the case key. Every engine runner reads its packing
+// through this, before it makes the run directory.
+std::vector<Sphere> read_case_packing(const Case& c);
 
 }  // namespace brash

@@ -409,7 +409,7 @@ int main(int argc, char** argv) {
     const brash::Case c = brash::run::load_case_with_overrides(case_file, overrides, "[brash-liggghts]");
     brash::run::prepare_case_inputs(c, case_file, "[brash-liggghts]");
     const double run_duration = c.run.duration_s;
-    auto spheres = brash::read_packing_csv(c.ice.packing_file);
+    auto spheres = brash::read_case_packing(c);  // checked against the case before any output
     if (c.speedups.symmetry_y) spheres = brash::liggghts::half_channel_spheres(spheres);
     auto mesh = brash::hull::read_mesh(c.hull.file);
     brash::hull::require_plausible_units(mesh, c.hull.file, c.hull.draft_m, c.hull.lpp_m);

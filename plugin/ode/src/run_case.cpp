@@ -271,7 +271,7 @@ RunResult run_case(const RunOptions& cli_options) {
 
   // Inputs: the packing is generated on first use (cached in the case folder); the hull must exist.
   run::prepare_case_inputs(c, case_file, "[brash-ode]");
-  const auto spheres = read_packing_csv(c.ice.packing_file);
+  const auto spheres = read_case_packing(c);  // checked against the case before any output
   if (spheres.empty()) throw InputError(c.ice.packing_file.string() + ": no spheres");
   check_packing(spheres, c.ice.packing_file, o.overlap_tolerance_over_d * c.ice.diameter_mean_m,
                 0.5 * c.channel.width_m);

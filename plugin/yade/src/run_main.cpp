@@ -110,7 +110,7 @@ int main(int argc, char** argv) {
     brash::run::CaseOverrides overrides{model, treatment, duration};
     const brash::Case c = brash::run::load_case_with_overrides(case_file, overrides, "[brash-yade]");
     brash::run::prepare_case_inputs(c, case_file, "[brash-yade]");
-    const auto spheres = brash::read_packing_csv(c.ice.packing_file);
+    const auto spheres = brash::read_case_packing(c);  // checked against the case before any output
     auto mesh = brash::hull::read_mesh(c.hull.file);
     brash::hull::require_plausible_units(mesh, c.hull.file, c.hull.draft_m, c.hull.lpp_m);
     // Run-time guards (brash::guard, docs/stability.md): the LIGGGHTS scene box of the same case (extents of
