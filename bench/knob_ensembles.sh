@@ -4,7 +4,7 @@
 # (bench/pareto_plot.sh -> docs/performance_pareto.png). ~4 h on a quiet 2-core machine for the eight knobs at 12
 # seeds (two runs at a time); finished runs are kept and skipped, so it can be stopped and started again.
 #   bash bench/knob_ensembles.sh [N_SEEDS (12)] [OUT (runs/rank-ensemble: shares side A with the rank comparison)]
-# env: CASE (cases/jbc_quick), KNOBS (names below, default all), JOBS (2), BRASH_BIN.
+# env: CASE (cases/jbc_narrow), KNOBS (names below, default all), JOBS (2), BRASH_BIN.
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 n_seeds="${1:-12}"

@@ -7,7 +7,7 @@
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 bin="${BRASH_BIN:-$here/build/bin}"
-case_dir="${1:-$here/cases/jbc_quick}"
+case_dir="${1:-$here/cases/jbc_narrow}"
 steps_cg="${BENCH_CALLGRIND_STEPS:-100}"
 steps_tp="${BENCH_THROUGHPUT_STEPS:-2000}"
 work="$(mktemp -d /tmp/brash-bench-XXXX)"

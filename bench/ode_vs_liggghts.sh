@@ -5,7 +5,7 @@
 #   bench/ode_vs_liggghts.sh [CASE_DIR]
 #   env: BENCH_DURATION (default 0.3 s), BENCH_NP (LIGGGHTS MPI ranks, default 2), BRASH_BIN (default build/bin),
 #        BRASH_ODE_BIN (default: brash-ode in BRASH_BIN, else build-ode/bin)
-# Note: on cases/jbc_quick the bow reaches the ice at t = 0.31 s, so the default 0.3 s measures the floating
+# Note: on cases/jbc_narrow the bow reaches the ice at t = 0.31 s, so the default 0.3 s measures the floating
 # bed without hull contacts (the per-step cost of the bed; hull contacts add ~25 % collision work in ODE).
 # The time steps differ on purpose (ODE 5e-4 s, LIGGGHTS the case's 1e-4 s): particle-steps/s is the cost of
 # one step, wall time per simulated second is what a user waits.
@@ -14,7 +14,7 @@ here="$(cd "$(dirname "$0")/.." && pwd)"
 bin="${BRASH_BIN:-$here/build/bin}"
 ode="${BRASH_ODE_BIN:-$bin}"
 [ -x "$ode/brash-ode" ] || ode="$here/build-ode/bin"
-case_dir="${1:-$here/cases/jbc_quick}"
+case_dir="${1:-$here/cases/jbc_narrow}"
 dur="${BENCH_DURATION:-0.3}"
 np="${BENCH_NP:-2}"
 for x in "$ode/brash-ode" "$bin/brash-liggghts-run"; do

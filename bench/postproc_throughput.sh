@@ -11,7 +11,7 @@ atoms="${POST_BENCH_ATOMS:-420000}"
 work="$(mktemp -d /tmp/brash-postbench-XXXX)"
 trap 'rm -rf "$work"' EXIT
 
-"$bin/brash-liggghts-run" "$here/cases/jbc_quick" --duration 0.02 --out "$work/small" --no-post >/dev/null 2>&1 ||
+"$bin/brash-liggghts-run" "$here/cases/jbc_narrow" --duration 0.02 --out "$work/small" --no-post >/dev/null 2>&1 ||
   { echo "bench: the quick-case run for the run layout failed" >&2; exit 1; }
 cp -r "$work/small" "$work/big"
 rm -f "$work/big/particles/"particles_*.csv

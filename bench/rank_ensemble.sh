@@ -7,7 +7,7 @@
 # the mean of the paired relative differences (B - A) / mean with its 95 % confidence interval (Student t): B makes
 # no difference beyond 1 % when that interval lies inside [-1 %, +1 %].
 #   bash bench/rank_ensemble.sh [N_SEEDS (12)] [OUT (runs/rank-ensemble)]
-# env: CASE (cases/jbc_quick), SIDE_A ("1"), SIDE_B ("2"): a side is NP[:section.key=value,...] (MPI ranks, then
+# env: CASE (cases/jbc_narrow), SIDE_A ("1"), SIDE_B ("2"): a side is NP[:section.key=value,...] (MPI ranks, then
 # edits of the case, as in bench/speed_vs_error.sh), e.g. SIDE_B="1:run.timestep_s=2.0e-4" for the dt knob; NP
 # `ode`, `ode@DT` or `ode@DT@ITERATIONS` runs the side on brash-ode instead (at its default step, or `--dt DT`, and
 # `--iterations ITERATIONS` quickstep iterations), then brash-post;
@@ -22,7 +22,7 @@ here="$(cd "$(dirname "$0")/.." && pwd)"
 n_seeds="${1:-12}"
 out="${2:-$here/runs/rank-ensemble}"
 bin="${BRASH_BIN:-$here/build/bin}"
-case_src="$(cd "${CASE:-$here/cases/jbc_quick}" && pwd)"
+case_src="$(cd "${CASE:-$here/cases/jbc_narrow}" && pwd)"
 sides=("${SIDE_A:-1}" "${SIDE_B:-2}")
 mkdir -p "$out/cases"
 np_of() { echo "${1%%:*}"; }

@@ -6,7 +6,7 @@
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 bin="${BRASH_BIN:-$here/build/bin}"
-case_dir="${1:-$here/cases/jbc_quick}"
+case_dir="${1:-$here/cases/jbc_narrow}"
 steps="${BENCH_YADE_STEPS:-200}"
 if [ ! -x "$bin/brash-yade-run" ]; then
   echo "bench/yade.sh: $bin/brash-yade-run not built (needs the Debian packages yade and pybind11-dev); skipped"

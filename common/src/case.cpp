@@ -426,13 +426,19 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
   {  // fsicr
     const auto s = r.section(root, "fsicr",
                              {"alpha_deg", "phi1_deg", "phi2_deg", "psi_deg", "L_par_m", "L_bow_m", "A_wf_m2"});
-    r.opt_num(s, "fsicr", "alpha_deg", c.fsicr.alpha_deg);
-    r.opt_num(s, "fsicr", "phi1_deg", c.fsicr.phi1_deg);
-    r.opt_num(s, "fsicr", "phi2_deg", c.fsicr.phi2_deg);
-    r.opt_num(s, "fsicr", "psi_deg", c.fsicr.psi_deg);
-    r.opt_num(s, "fsicr", "L_par_m", c.fsicr.L_par_m);
-    r.opt_num(s, "fsicr", "L_bow_m", c.fsicr.L_bow_m);
-    r.opt_num(s, "fsicr", "A_wf_m2", c.fsicr.A_wf_m2);
+    // values no hull has are errors here; values outside the rule's validity range are the report's warnings
+    const auto bounded = [&](std::string_view k, std::optional<double>& out, auto ok, std::string_view need) {
+      r.opt_num(s, "fsicr", k, out);
+      if (out && !ok(*out)) r.fail(s[std::string(k)], "fsicr." + std::string(k), fmt::format("must be {}, got {}", need, *out));
+    };
+    const auto angle = [](double a) { return a > 0 && a <= 90; };
+    bounded("alpha_deg", c.fsicr.alpha_deg, angle, "an angle in (0, 90] deg");
+    bounded("phi1_deg", c.fsicr.phi1_deg, angle, "an angle in (0, 90] deg");
+    bounded("phi2_deg", c.fsicr.phi2_deg, angle, "an angle in (0, 90] deg");
+    bounded("psi_deg", c.fsicr.psi_deg, angle, "an angle in (0, 90] deg");
+    bounded("L_par_m", c.fsicr.L_par_m, non_negative, ">= 0 (m, full scale)");
+    bounded("L_bow_m", c.fsicr.L_bow_m, positive, "> 0 (m, full scale)");
+    bounded("A_wf_m2", c.fsicr.A_wf_m2, positive, "> 0 (m^2, full scale)");
   }
   {  // speedups (docs/performance.md)
     const auto s = r.section(root, "speedups",

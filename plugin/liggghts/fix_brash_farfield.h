@@ -14,7 +14,7 @@
 
    wake_force F (N), wake_speed V (m/s) (default 0 = off: the window alone). The window alone is not enough
    when the ship's push travels further than A through the ice (a packed bed pushed ahead of the bow: an idle
-   wall A ahead of it jams the bed and raises the resistance, +19 % on cases/jbc_quick). With wake_force, an idle
+   wall A ahead of it jams the bed and raises the resistance, +19 % on cases/jbc_narrow). With wake_force, an idle
    piece wakes as soon as the horizontal force on it (from active neighbours and walls: idle pieces get no
    gravity or fluid force) exceeds F (END_OF_STEP, where f of a local atom is complete with newton off; its pairs
    with idle neighbours, excluded until then, are in the neighbour list from a build forced within 10 steps,

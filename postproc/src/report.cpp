@@ -119,6 +119,13 @@ FsicrSummary resolve_fsicr(const PostCase& c, const std::optional<FsicrParams>& 
                                      fmt::join(missing, ", ")));
     return s;
   }
+  // values no hull has (a measurement of an odd mesh): no R_CH rather than a meaningless one
+  const auto impossible = fsicr_impossible_values(
+      s.params, [&](std::string_view field) { return fmt::format("{} ({})", field, s.source.at(std::string(field))); });
+  if (!impossible.empty()) {
+    s.warnings.push_back(fmt::format("R_CH not computed: {}", fmt::join(impossible, "; ")));
+    return s;
+  }
   s.result = fsicr_channel_resistance(s.params, ic, {}, c.psi_override_deg);
   s.warnings = fsicr_validity_warnings(s.params);
   return s;

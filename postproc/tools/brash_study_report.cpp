@@ -258,6 +258,7 @@ struct Fit {
   std::string engine, model;
   std::size_t points = 0;
   double n = NAN, n_se = NAN, a = NAN;  // R = a U^n (R in N at model scale, U in m/s)
+  double n_ci95 = NAN;                   // t_{0.975, points - 2} x n_se
   std::vector<std::string> refs;
 };
 
@@ -286,6 +287,7 @@ Fit fit_power_law(const std::vector<std::pair<double, double>>& uv) {
       ssr += e * e;
     }
     f.n_se = std::sqrt(ssr / (k - 2.0) / sxx);
+    f.n_ci95 = brash::post::student_t975(uv.size() - 2) * f.n_se;
   }
   return f;
 }
@@ -1034,7 +1036,8 @@ void section_speed(Study& s, std::string& md, const fs::path& plot_png, json& su
     return;
   }
   md += "Model-scale resistance vs model-scale speed; n = slope of a least-squares line through (ln U, ln R), "
-        "± its standard error (needs >= 3 speeds). Tanks show a linear trend (n ≈ 1), earlier simulations "
+        "± its 95 % confidence interval (Student t with speeds - 2 degrees of freedom times its standard error, SE; "
+        "needs >= 3 speeds). Tanks show a linear trend (n ≈ 1), earlier simulations "
         "quadratic (n ≈ 2).\n\n"
         "| run | engine | fluid model | U [m/s] | R model [N] ± CI95 | R full [kN] ± CI95 | case / scale | status |\n"
         "|---|---|---|---|---|---|---|---|\n";
@@ -1051,7 +1054,7 @@ void section_speed(Study& s, std::string& md, const fs::path& plot_png, json& su
     auto& g = groups[{r.engine, r.model}];
     if (std::find(g.begin(), g.end(), &r) == g.end()) g.push_back(&r);
   }
-  md += "\n| engine | fluid model | speeds | n ± SE | a in R = a U^n [N] | runs |\n|---|---|---|---|---|---|\n";
+  md += "\n| engine | fluid model | speeds | n ± CI95 (SE) | a in R = a U^n [N] | runs |\n|---|---|---|---|---|---|\n";
   std::vector<Fit> fits;
   for (auto& [k, g] : groups) {
     std::vector<std::pair<double, double>> uv;
@@ -1067,13 +1070,14 @@ void section_speed(Study& s, std::string& md, const fs::path& plot_png, json& su
     f.refs = refs;
     std::string refs_s;
     for (const auto& x : refs) refs_s += (refs_s.empty() ? "" : ", ") + x;
-    const std::string nse = std::isfinite(f.n_se) ? fmt::format("{:.3f} ± {:.3f}", f.n, f.n_se)
+    const std::string nse = std::isfinite(f.n_se) ? fmt::format("{:.3f} ± {:.3f} (SE {:.3f})", f.n, f.n_ci95, f.n_se)
                             : std::isfinite(f.n)  ? fmt::format("{:.3f} (no SE: {} speeds)", f.n, f.points)
                                                   : fmt::format("n/a ({} usable speed(s))", f.points);
     md += fmt::format("| {} | {} | {} | {} | {} | {} |\n", f.engine, f.model, f.points, nse, num(f.a, 3), refs_s);
     summary["fits"].push_back({{"engine", f.engine}, {"fluid_model", f.model}, {"points", f.points},
                                {"n", std::isfinite(f.n) ? json(f.n) : json(nullptr)},
                                {"n_se", std::isfinite(f.n_se) ? json(f.n_se) : json(nullptr)},
+                               {"n_ci95", std::isfinite(f.n_ci95) ? json(f.n_ci95) : json(nullptr)},
                                {"a", std::isfinite(f.a) ? json(f.a) : json(nullptr)}});
     fits.push_back(f);
   }

@@ -101,7 +101,7 @@ TEST(GuardChecks, StopMessageNamesStepTimePieceCause) {
 }
 
 TEST(GuardChecks, LimitsOfTheQuickCase) {
-  const brash::Case c = brash::load_case(std::string(BRASH_SOURCE_DIR) + "/cases/jbc_quick/case.yaml");
+  const brash::Case c = brash::load_case(std::string(BRASH_SOURCE_DIR) + "/cases/jbc_narrow/case.yaml");
   // JBC extents in its STL frame: x -0.125 .. 7.149, z 0 .. 0.625.
   const auto box = brash::guard::domain_box(c, -0.125, 7.149, 0.0, 0.625, c.run.duration_s);
   const double d = c.ice.diameter_mean_m;

@@ -20,7 +20,7 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// jbc_quick's ice in a 1.2 x 0.8 m channel: ~2,100 spheres, fast.
+// jbc_narrow's ice in a 1.2 x 0.8 m channel: ~2,100 spheres, fast.
 PackingRequest small_request() {
   PackingRequest q;
   q.length_m = 1.2;

@@ -16,10 +16,11 @@ namespace brash::test {
 struct SmallCase {
   std::string duration_s = "0.6", window_s = "[0.0, 0.6]", output_interval_s = "0.01",
               dump_interval_s = "0.1";
+  std::string fluid_model;  // empty: the case's (both)
   std::string extra;
 };
 inline void write_small_quick_case(const std::filesystem::path& case_dir, const SmallCase& k) {
-  std::string yaml = read_text(std::filesystem::path(BRASH_SOURCE_DIR) / "cases/jbc_quick/case.yaml");
+  std::string yaml = read_text(std::filesystem::path(BRASH_SOURCE_DIR) / "cases/jbc_narrow/case.yaml");
   auto set = [&](const std::string& key, const std::string& value) {
     yaml = std::regex_replace(yaml, std::regex("\n  " + key + ":[^\n]*"), "\n  " + key + ": " + value);
   };
@@ -30,6 +31,7 @@ inline void write_small_quick_case(const std::filesystem::path& case_dir, const 
   set("window_s", k.window_s);
   set("output_interval_s", k.output_interval_s);
   set("dump_interval_s", k.dump_interval_s);
+  if (!k.fluid_model.empty()) set("model", k.fluid_model);
   std::filesystem::create_directories(case_dir);
   std::ofstream(case_dir / "case.yaml") << yaml << k.extra;
 }

@@ -113,7 +113,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadArgs{"gravity maybe", "keyword 'gravity' expects yes or no"},
                       BadArgs{"model drag hull_flow nohull.stl 0 0 -0.4 0.5",
                               "fix icefluid: nohull.stl: cannot open the file"},
-                      BadArgs{"hull_flow nohull.stl 0 0 -0.4 0.5",
+                      BadArgs{"model added_mass hull_flow nohull.stl 0 0 -0.4 0.5",
                               "fix icefluid: 'hull_flow' acts through the drag, and model added_mass has none"},
                       BadArgs{"water_density -1000", "ERROR: fix icefluid: invalid fluid parameters"},
                       BadArgs{"hull_flow nohull.stl 0 0", "keyword 'hull_flow' needs 5 value(s)"},

@@ -25,6 +25,7 @@ void write_small_case(const fs::path& case_dir, const std::string& duration, con
                                                  .window_s = "[0.0, " + duration + "]",
                                                  .output_interval_s = "0.01",
                                                  .dump_interval_s = "0.05",
+                                                 .fluid_model = "",
                                                  .extra = extra});
 }
 
@@ -100,7 +101,8 @@ TEST(LiggghtsGuardRunner, HullFlowCaseRunsWithModelDragAndIsRefusedWithAddedMass
                             "\n  ca_table: table1\n  hull_flow: thin_ship");
   std::ofstream(dir / "case/case.yaml") << yaml;
   const std::string cmd = brash::test::runner_command(dir / "case", dir / "run");
-  ASSERT_NE(std::system((cmd + " > '" + (dir / "refused.log").string() + "' 2>&1").c_str()), 0);
+  // the case's model (both) takes the flow; --model added_mass has no drag for it and is refused
+  ASSERT_NE(std::system((cmd + " --model added_mass > '" + (dir / "refused.log").string() + "' 2>&1").c_str()), 0);
   const std::string refused = brash::test::read_text(dir / "refused.log");
   EXPECT_NE(refused.find("fluid.hull_flow"), std::string::npos) << refused;
   EXPECT_NE(refused.find("added_mass has none"), std::string::npos) << refused;

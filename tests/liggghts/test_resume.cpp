@@ -90,11 +90,12 @@ bool wait_for_exit_code(const fs::path& dir) {
 }
 // The quick case, narrowed and shortened (liggghts_runner.h): 0.6 s.
 void write_small_case(const fs::path& case_dir, const std::string& window, const std::string& output_interval,
-                      const std::string& extra) {
+                      const std::string& extra, const std::string& fluid_model = "") {
   brash::test::write_small_quick_case(case_dir, {.duration_s = "0.6",
                                                  .window_s = window,
                                                  .output_interval_s = output_interval,
                                                  .dump_interval_s = "0.1",
+                                                 .fluid_model = fluid_model,
                                                  .extra = extra});
 }
 }  // namespace
@@ -104,8 +105,10 @@ TEST(LiggghtsRunner, EarlyStopWhenTheConfidenceIntervalIsSmallEnough) {
   // A loose threshold (50 % of the mean) so that the short run meets it: checked from 0.1 + 0.4 * 0.5 s on. The
   // bow is still entering the ice (a ramp), so the default trend check would (rightly) never stop it: this test
   // is about the runner stopping the engine, the rule itself is tested in tests/postproc/test_early_stop.cpp.
+  // added_mass: its record over the bow's first 0.6 s meets the 50 % threshold before the end (with both the
+  // drag's rise keeps the CI above it)
   write_small_case(dir / "case", "[0.1, 0.6]", "0.002",
-                   "speedups:\n  early_stop_rel_ci: 0.5\n  early_stop_trend_check: false\n");
+                   "speedups:\n  early_stop_rel_ci: 0.5\n  early_stop_trend_check: false\n", "added_mass");
   ASSERT_EQ(brash::test::run_runner(dir / "case", dir / "run", dir / "run.log"), 0);
   const std::string meta = brash::test::read_text(dir / "run/meta.json");
   EXPECT_NE(meta.find("\"complete\""), std::string::npos);

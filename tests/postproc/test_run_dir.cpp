@@ -127,6 +127,31 @@ TEST(RunDir, PublishedReferencesComeFromTheCase) {
   fs::remove_all(dir);
 }
 
+// The paper case's archived both run (docs/paper_runs), post-processed again: its case declares the paper's
+// values, so the report compares with them (393 kN for both, R_CH 999 kN, the stated ratio 2.54).
+TEST(RunDir, PaperCaseArchiveComparesWithThePapersDeclaredValues) {
+  const auto dir = scratch("paper_archive");
+  fs::remove_all(dir);
+  fs::copy(fs::path(BRASH_SOURCE_DIR) / "docs/paper_runs/paper-liggghts-both-20s", dir, fs::copy_options::recursive);
+  const auto cmd = fmt::format("{} {} --no-plots --no-paraview > {} 2>&1", BRASH_POST_EXE, dir.string(),
+                               (dir / "cli.log").string());
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << brash::post::read_text_file(dir / "cli.log");
+  std::ifstream in(dir / "report.json");
+  const auto j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["fluid_model"], "both");
+  EXPECT_NEAR(j["resistance_full_kN"].get<double>(), 568.1, 0.05);
+  const auto& ref = j["reference"];
+  ASSERT_TRUE(ref.is_object()) << j.dump(2);
+  EXPECT_NE(ref["source"].get<std::string>().find("Fluid Force Modelling"), std::string::npos);
+  EXPECT_EQ(ref["resistance_full_kN"].get<double>(), 393.0);
+  EXPECT_EQ(ref["fsicr_R_CH_kN"].get<double>(), 999.0);
+  EXPECT_EQ(ref["ratio_fsicr_to_sim"].get<double>(), 2.54);
+  EXPECT_TRUE(ref["ratio_stated"].get<bool>());
+  EXPECT_NEAR(ref["resistance_over_reference"].get<double>(), 568.1 / 393.0, 1e-3);
+  EXPECT_NE(brash::post::read_text_file(dir / "report.md").find("| 393 kN (this run +44.6 %) |"), std::string::npos);
+  fs::remove_all(dir);
+}
+
 // The window's two halves: a stationary record shows no drift; one rising 0.02 N/s (+0.5 N over the 25 s
 // window, ~14 x the CI of the difference) is flagged in report.json, in the notes and in report.md.
 TEST(RunDir, ResistanceRisingThroughTheWindowIsFlagged) {
@@ -328,6 +353,23 @@ TEST(RunDir, MeasuredHullGivesFsicrParameters) {
 #else
   GTEST_SKIP() << "built without brash_hull";
 #endif
+}
+
+// A measured hull whose parameters no hull has (a bow longer than the ship, from an odd mesh) gets no R_CH, and
+// the warning names the parameter and where it came from, instead of a meaningless number.
+TEST(RunDir, ImpossibleMeasuredHullGivesNoFsicrResult) {
+  PostCase c;
+  c.scale_lambda = 28.5;
+  brash::FsicrParams m{};
+  m.L_m = 199.5, m.B_m = 32, m.T_m = 11.7, m.alpha_deg = 38, m.phi1_deg = 90, m.phi2_deg = 80;
+  m.L_par_m = 100, m.L_bow_m = 250, m.A_wf_m2 = 900;
+  const auto s = resolve_fsicr(c, m);
+  EXPECT_FALSE(s.result.has_value());
+  ASSERT_FALSE(s.warnings.empty());
+  EXPECT_NE(s.warnings.front().find("R_CH not computed"), std::string::npos) << s.warnings.front();
+  EXPECT_NE(s.warnings.front().find("L_bow_m (measured) 250"), std::string::npos) << s.warnings.front();
+  m.L_bow_m = 40;  // the same hull with a possible bow: a result
+  EXPECT_TRUE(resolve_fsicr(c, m).result.has_value());
 }
 
 // `brash-post early-stop`: the rule replayed on a finished synthetic run (plateau from 10 s, window [15, 40] s,

@@ -89,13 +89,51 @@ TEST(StudyReport, ExponentFitIsExactOnPowerLaw) {
   EXPECT_EQ(s["failed"], 0);
   const std::string md = read(d / "study.md");
   EXPECT_NE(md.find("## (b) Speed sweep"), std::string::npos);
-  EXPECT_NE(md.find("1.370 ± 0.000"), std::string::npos) << md;
+  EXPECT_NE(md.find("1.370 ± 0.000 (SE 0.000)"), std::string::npos) << md;
   EXPECT_NE(md.find("0.820 ± 0.000"), std::string::npos);
   EXPECT_NE(md.find("brash-liggghts-run case_3 --model added_mass"), std::string::npos);  // command of the run
   if (std::system("command -v gnuplot > /dev/null 2>&1") == 0) {
     EXPECT_TRUE(fs::exists(d / "study_speed.png"));
     EXPECT_NE(md.find("![speed sweep](study_speed.png)"), std::string::npos);
   }
+}
+
+// With scatter about the power law the exponent's CI95 is t_{0.975, speeds - 2} times the slope's standard error
+// (5 speeds: t_{0.975, 3} = 3.182, the table's 3 decimals), the SE from the residuals of the log-log line.
+TEST(StudyReport, ExponentCarriesItsConfidenceInterval) {
+  const fs::path d = fresh_dir("fit_ci");
+  const std::vector<double> u{0.2, 0.3, 0.482, 0.7, 1.0}, e{0.02, -0.01, 0.0, -0.02, 0.01};
+  std::string m = kHeader;
+  for (std::size_t i = 0; i < u.size(); ++i) {
+    const std::string rd = fmt::format("runs/c{}", i);
+    write_report(d / rd, "liggghts", "both", u[i], 10.0 * std::pow(u[i], 1.2) * std::exp(e[i]), 0.1);
+    m += fmt::format("c{}\tspeed\tU {}\tspeed_m_s\t{}\t0\tjbc_quick\t0\t{}\tcmd\n", i, u[i], u[i], rd);
+  }
+  std::ofstream(d / "manifest.tsv") << m;
+  ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --summary-json '{}' --plot none", (d / "manifest.tsv").string(),
+                                    (d / "study.md").string(), (d / "summary.json").string())),
+            0)
+      << read(d / "tool.log");
+  // the least-squares slope and its SE, written out
+  double mx = 0, my = 0;
+  for (std::size_t i = 0; i < u.size(); ++i) mx += std::log(u[i]) / 5, my += (std::log(10.0 * std::pow(u[i], 1.2)) + e[i]) / 5;
+  double sxx = 0, sxy = 0;
+  for (std::size_t i = 0; i < u.size(); ++i) {
+    sxx += std::pow(std::log(u[i]) - mx, 2);
+    sxy += (std::log(u[i]) - mx) * (std::log(10.0 * std::pow(u[i], 1.2)) + e[i] - my);
+  }
+  const double n = sxy / sxx;
+  double ssr = 0;
+  for (std::size_t i = 0; i < u.size(); ++i)
+    ssr += std::pow(std::log(10.0 * std::pow(u[i], 1.2)) + e[i] - my - n * (std::log(u[i]) - mx), 2);
+  const double se = std::sqrt(ssr / 3 / sxx);
+  const json s = json::parse(read(d / "summary.json"));
+  ASSERT_EQ(s["fits"].size(), 1u);
+  EXPECT_NEAR(s["fits"][0]["n"].get<double>(), n, 1e-12);
+  EXPECT_NEAR(s["fits"][0]["n_se"].get<double>(), se, 1e-12);
+  EXPECT_NEAR(s["fits"][0]["n_ci95"].get<double>(), 3.182 * se, 1e-12);
+  EXPECT_NE(read(d / "study.md").find(fmt::format("{:.3f} ± {:.3f} (SE {:.3f})", n, 3.182 * se, se)),
+            std::string::npos);
 }
 
 TEST(StudyReport, TablesCarryValuesAndFailuresAreReported) {

@@ -21,7 +21,7 @@ Entry cli(std::string name, std::string command, std::vector<std::string> expect
 std::vector<Entry> commands() {
   std::vector<Entry> c;
   const std::string run = q(BRASH_LIGGGHTS_RUN_EXE), pack = q(BRASH_PACK_EXE), hull = q(BRASH_HULL_EXE);
-  const std::string quick = std::string(BRASH_SOURCE_DIR) + "/cases/jbc_quick";
+  const std::string quick = std::string(BRASH_SOURCE_DIR) + "/cases/jbc_narrow";
   c.push_back(cli("liggghts_run_unknown_option", run + " " + quick + " --frobnicate", {"--frobnicate"}));
   c.push_back(cli("liggghts_run_missing_case_dir", run + " {dir}/no_such_case --prepare-only",
                   {"{dir}/no_such_case"}));
