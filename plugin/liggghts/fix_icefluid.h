@@ -3,7 +3,7 @@
    fix ID group-ID icefluid keyword value ...
 
    keywords (all optional; defaults in brackets):
-     model        drag | added_mass | both                 [added_mass]
+     model        drag | added_mass | both                 [both]
      treatment    implicit | explicit                      [implicit]
      cd           drag coefficient C_D                      [0.44]
      drag_law     constant | schiller_naumann              [constant]

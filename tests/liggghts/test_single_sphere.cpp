@@ -77,6 +77,21 @@ TEST(LiggghtsSingleSphere, RiseMatchesReferenceAndAnalytic) {
   }
 }
 
+// `fix icefluid` without `model`: the default is both (drag plus added mass). The rise follows the both
+// reference and not the added_mass one (no drag: it would keep accelerating).
+TEST(LiggghtsSingleSphere, DefaultModelIsDragPlusAddedMass) {
+  const double dt = 1e-5;
+  auto dir = fresh_dir("rise_default");
+  ASSERT_EQ(run_liggghts(dir, scene(-1.0, dt, "", 5000, 30000)), 0) << dir;
+  const auto rows = read_table(dir / "out.txt");
+  ASSERT_GE(rows.size(), 5u);
+  auto both = reference(-1.0, dt, FluidModel::Both), am = reference(-1.0, dt, FluidModel::AddedMass);
+  both.run(30000);
+  am.run(30000);
+  EXPECT_NEAR(rows.back()[2] / both.v_m_s.z(), 1.0, 5e-3);
+  EXPECT_GT(am.v_m_s.z() / both.v_m_s.z(), 1.05);  // the two references differ by more than the tolerance
+}
+
 TEST(LiggghtsSingleSphere, FloatingDraftAndHeavePeriod) {
   const double dt = 2e-5;
   const double h = analytic::height_for_fraction(r, rho_i / rho_w);
