@@ -11,7 +11,7 @@
 
 #include <brash/error.hpp>
 #include <brash/run_layout.hpp>
-#include <brash/post/early_stop.hpp>
+#include <brash/stats/early_stop.hpp>
 #include <brash/post/fsicr.hpp>
 #include <brash/post/particles.hpp>
 #include <brash/post/plots.hpp>
@@ -70,7 +70,7 @@ int run_early_stop(const fs::path& run_dir, const std::vector<double>& threshold
              "difference / full CI95 |\n|---|---|---|---|---|---|\n");
   for (const double rel : thresholds) {
     if (!(rel > 0)) throw brash::InputError(fmt::format("--rel-ci {}: must be > 0", rel));
-    const auto e = replay_early_stop(a.force.t_s, r, t0, t1, rel, every, trend_check);
+    const auto e = brash::stats::replay_early_stop(a.force.t_s, r, t0, t1, rel, every, trend_check);
     const double d = e.at_stop.mean - full.mean;
     if (!e.stopped)
       fmt::print("| {:.3g} | never (CI95 at the window end {:.1f} %) | 0 % | — | — | — |\n", rel,

@@ -33,7 +33,7 @@ const std::vector<std::pair<std::string, Field>>& fsicr_fields() {
   return f;
 }
 
-nlohmann::ordered_json blocking_json(const BlockingResult& b) {
+nlohmann::ordered_json blocking_json(const stats::BlockingResult& b) {
   const auto& L = b.levels[b.level];
   return {{"mean", b.mean}, {"ci95", b.ci95}, {"sem", b.sem}, {"samples", b.n_samples},
           {"block_size", L.block_size}, {"n_blocks", L.n_blocks}, {"correction", b.correction}, {"plateau_found", b.plateau_found}};
@@ -176,16 +176,16 @@ RunAnalysis analyze_run(const std::filesystem::path& run_dir) {
         a.gaps.size(), list, missing, 100 * missing / span, span - missing));
   }
 
-  a.fx = block_average(slice(a.force.fx_N, w.i0, w.i1));
-  a.fy = block_average(slice(a.force.fy_N, w.i0, w.i1));
-  a.fz = block_average(slice(a.force.fz_N, w.i0, w.i1));
+  a.fx = stats::block_average(slice(a.force.fx_N, w.i0, w.i1));
+  a.fy = stats::block_average(slice(a.force.fy_N, w.i0, w.i1));
+  a.fz = stats::block_average(slice(a.force.fz_N, w.i0, w.i1));
   const auto resistance_N = negated(slice(a.force.fx_N, w.i0, w.i1));
-  a.resistance = block_average(resistance_N);
+  a.resistance = stats::block_average(resistance_N);
   if (!a.resistance.plateau_found)
     a.notes.push_back("block averaging found no plateau of the variance of the mean: the CI95 is a lower bound "
                       "(window too short for the signal's correlation time)");
   if (w.i1 - w.i0 >= kMinTrendSamples) {
-    const auto& t = *(a.resistance_trend = halves_trend(resistance_N));
+    const auto& t = *(a.resistance_trend = stats::halves_trend(resistance_N));
     if (t.drifts())
       a.notes.push_back(fmt::format(
           "the resistance is not stationary over the window: its second half averages {:.4g} N, the first "
@@ -383,7 +383,7 @@ std::string force_history_csv(const RunAnalysis& a) {
   return s;
 }
 
-std::string blocking_csv(const BlockingResult& b) {
+std::string blocking_csv(const stats::BlockingResult& b) {
   std::string s = "level,block_size,n_blocks,var_of_mean,var_error,lag1_corr,chosen\n";
   for (std::size_t k = 0; k < b.levels.size(); ++k) {
     const auto& L = b.levels[k];

@@ -35,6 +35,7 @@
 #include <brash/error.hpp>
 #include <brash/post/force_history.hpp>
 #include <brash/post/report.hpp>
+#include <brash/stats/student_t.hpp>
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -287,7 +288,7 @@ Fit fit_power_law(const std::vector<std::pair<double, double>>& uv) {
       ssr += e * e;
     }
     f.n_se = std::sqrt(ssr / (k - 2.0) / sxx);
-    f.n_ci95 = brash::post::student_t975(uv.size() - 2) * f.n_se;
+    f.n_ci95 = brash::stats::student_t975(uv.size() - 2) * f.n_se;
   }
   return f;
 }

@@ -20,7 +20,7 @@
 #include <thread>
 #include <vector>
 
-#include "brash/post/early_stop.hpp"
+#include "brash/stats/early_stop.hpp"
 #include "runner_case.h"
 
 namespace fs = std::filesystem;
@@ -104,7 +104,7 @@ TEST(LiggghtsRunner, EarlyStopWhenTheConfidenceIntervalIsSmallEnough) {
   const fs::path dir = brash::test::fresh_dir("earlystop");
   // A loose threshold (50 % of the mean) so that the short run meets it: checked from 0.1 + 0.4 * 0.5 s on. The
   // bow is still entering the ice (a ramp), so the default trend check would (rightly) never stop it: this test
-  // is about the runner stopping the engine, the rule itself is tested in tests/postproc/test_early_stop.cpp.
+  // is about the runner stopping the engine, the rule itself is tested in tests/stats/test_early_stop.cpp.
   // added_mass: its record over the bow's first 0.6 s meets the 50 % threshold before the end (with both the
   // drag's rise keeps the CI above it)
   write_small_case(dir / "case", "[0.1, 0.6]", "0.002",
@@ -120,7 +120,7 @@ TEST(LiggghtsRunner, EarlyStopWhenTheConfidenceIntervalIsSmallEnough) {
   // the runner stopped where the rule, replayed on its record at its check times (0.6 / 200 s), says
   std::vector<double> t, r;
   for (const auto& row : rows) t.push_back(row.t), r.push_back(-row.fx);
-  const auto replay = brash::post::replay_early_stop(t, r, 0.1, 0.6, 0.5, 0.6 / 200, false);
+  const auto replay = brash::stats::replay_early_stop(t, r, 0.1, 0.6, 0.5, 0.6 / 200, false);
   EXPECT_TRUE(replay.stopped);
   // the record ends with the last output row (every 0.002 s) at or before the stop
   EXPECT_LE(rows.back().t, replay.t_stop_s + 1e-9);
@@ -157,7 +157,7 @@ TEST(LiggghtsRunner, EarlyStopInAResumedRunFollowsTheRule) {
   ASSERT_GT(rows.size(), 100u);
   std::vector<double> t, r;
   for (const auto& row : rows) t.push_back(row.t), r.push_back(-row.fx);
-  const auto replay = brash::post::replay_early_stop(t, r, 0.1, 0.6, 0.5, 0.6 / 200, false);
+  const auto replay = brash::stats::replay_early_stop(t, r, 0.1, 0.6, 0.5, 0.6 / 200, false);
   const bool stopped = meta.find("\"early_stop\"") != std::string::npos;
   std::printf("[early stop, resumed run] runner: %s; replay: %s at %.3f s\n", stopped ? "stopped" : "ran to the end",
               replay.stopped ? "stops" : "never stops", replay.t_stop_s);

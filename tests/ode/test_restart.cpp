@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "brash/post/early_stop.hpp"
+#include "brash/stats/early_stop.hpp"
 
 namespace fs = std::filesystem;
 
@@ -259,7 +259,7 @@ TEST_F(Restart, EarlyStopEndsWhereTheRuleSays) {
   const auto full = read_csv(kRoot / "es_full" / "hull_force.csv");
   std::vector<double> t, r;
   for (const auto& row : full) t.push_back(row[0]), r.push_back(-row[1]);
-  const auto replay = brash::post::replay_early_stop(t, r, 0.1, 0.2, 0.5, 0.2 / 200, true);
+  const auto replay = brash::stats::replay_early_stop(t, r, 0.1, 0.2, 0.5, 0.2 / 200, true);
   ASSERT_TRUE(replay.stopped) << "the smoke record no longer meets the rule at 50 %: pick another threshold";
   std::ofstream(cdir / "case.yaml", std::ios::app) << "speedups:\n  early_stop_rel_ci: 0.5\n";
   ASSERT_EQ(run(exe + (kRoot / "es_run").string() + "' > /dev/null 2>&1"), 0);

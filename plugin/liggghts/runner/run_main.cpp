@@ -20,13 +20,12 @@
 #include <unistd.h>
 
 #include "brash/case.hpp"
-#include "brash/post/blocking.hpp"
-#include "brash/post/early_stop.hpp"
 #include "brash/error.hpp"
 #include "brash/hull/mesh.hpp"
 #include "brash/packing.hpp"
 #include "brash/run_layout.hpp"
 #include "brash/runner_setup.hpp"
+#include "brash/stats/early_stop.hpp"
 #include "liggghts_input.h"
 
 namespace fs = std::filesystem;
@@ -278,9 +277,9 @@ EngineResult run_engine(const fs::path& run_dir, int ranks, double duration_s, c
       res.t_last_s = t;
       if (res.t_first_s < 0) res.t_first_s = t;  // a resumed run starts at its restart time
       if (early && early->rel_ci > 0 && !early->stopped &&
-          t >= early->t0 + brash::post::kEarlyStopFirstCheckFraction * (early->t1 - early->t0)) {
+          t >= early->t0 + brash::stats::kEarlyStopFirstCheckFraction * (early->t1 - early->t0)) {
         const auto r = resistance_since(hull_force_raws(run_dir), early->t0, t);
-        const auto v = brash::post::early_stop_verdict(r, t, early->t0, early->t1, early->rel_ci, early->trend_check);
+        const auto v = brash::stats::early_stop_verdict(r, t, early->t0, early->t1, early->rel_ci, early->trend_check);
         const auto& b = v.blocking;
         if (v.stop) {
           early->stopped = true, early->t_stop = t, early->mean = b.mean, early->ci95 = b.ci95;

@@ -23,9 +23,9 @@
 #include "brash/hull/proximity.hpp"
 #include "brash/ode/restart.hpp"
 #include "brash/packing.hpp"
-#include "brash/post/early_stop.hpp"
 #include "brash/run_layout.hpp"
 #include "brash/runner_setup.hpp"
+#include "brash/stats/early_stop.hpp"
 
 namespace brash::ode {
 namespace fs = std::filesystem;
@@ -496,7 +496,7 @@ RunResult run_case(const RunOptions& cli_options) {
     const long n_dump = std::max(1L, std::lround(c.run.dump_interval_s / st.dt_s));
     const long n_restart = o.restart_every_s > 0 ? std::max(1L, std::lround(o.restart_every_s / st.dt_s)) : 0;
     const bool tty = isatty(2);
-    // Early stop (speedups.early_stop_rel_ci; the rule of brash/post/early_stop.hpp, checked as often as the
+    // Early stop (speedups.early_stop_rel_ci; the rule of brash/stats/early_stop.hpp, checked as often as the
     // LIGGGHTS runner does: every 1/200 of the run) on the hull force rows written so far.
     const double es_rel = c.speedups.early_stop_rel_ci, es_t0 = c.run.window_s[0], es_t1 = c.run.window_s[1];
     const long n_check = std::max(1L, steps / 200);
@@ -507,7 +507,7 @@ RunResult run_case(const RunOptions& cli_options) {
       return r;
     };
     bool es_stopped = false;
-    brash::post::BlockingResult es_at;
+    brash::stats::BlockingResult es_at;
     long k_end = steps;
     auto dump = [&](long step) {
       std::string s = "id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z\n";
@@ -598,9 +598,9 @@ RunResult run_case(const RunOptions& cli_options) {
         acc.setZero();
       }
       if (es_rel > 0 && k % n_check == 0 && k < steps &&
-          t >= es_t0 + brash::post::kEarlyStopFirstCheckFraction * (es_t1 - es_t0)) {
-        const auto v = brash::post::early_stop_verdict(resistance_rows(t), t, es_t0, es_t1, es_rel,
-                                                       c.speedups.early_stop_trend_check);
+          t >= es_t0 + brash::stats::kEarlyStopFirstCheckFraction * (es_t1 - es_t0)) {
+        const auto v = brash::stats::early_stop_verdict(resistance_rows(t), t, es_t0, es_t1, es_rel,
+                                                        c.speedups.early_stop_trend_check);
         if (v.stop) {
           es_stopped = true, es_at = v.blocking, k_end = k;
           logln(fmt::format("early stop at t = {:.4f} s: window mean {:.4g} N, 95 % CI +-{:.3g} N ({:.2f} % < {:.2f} %)",

@@ -11,12 +11,12 @@
 #include <nlohmann/json.hpp>
 
 #include <brash/fsicr_params.hpp>
-#include <brash/post/blocking.hpp>
 #include <brash/post/force_history.hpp>
 #include <brash/post/fsicr.hpp>
 #include <brash/post/particles.hpp>
 #include <brash/post/post_case.hpp>
 #include <brash/post/run_meta.hpp>
+#include <brash/stats/blocking.hpp>
 
 namespace brash::post {
 
@@ -58,9 +58,9 @@ struct RunAnalysis {
   ForceHistory force;
   WindowSelection window;
   std::vector<RecordGap> gaps;  // stretches of the window with no record (record_gaps)
-  BlockingResult resistance;  // of -fx, model scale [N]
-  BlockingResult fx, fy, fz;  // force components of the ice on the hull [N]
-  std::optional<HalvesTrend> resistance_trend;  // the window's two halves (>= kMinTrendSamples samples)
+  stats::BlockingResult resistance;  // of -fx, model scale [N]
+  stats::BlockingResult fx, fy, fz;  // force components of the ice on the hull [N]
+  std::optional<stats::HalvesTrend> resistance_trend;  // the window's two halves (>= kMinTrendSamples samples)
   double resistance_full_kN = 0, resistance_full_ci95_kN = 0;
   FsicrSummary fsicr;
   std::optional<double> ratio_fsicr_to_sim;
@@ -83,6 +83,6 @@ std::string report_markdown(const RunAnalysis& a);
 // Window-sample CSV: t_s,fx_N,fy_N,fz_N,resistance_N,in_window (for spreadsheets and plots).
 std::string force_history_csv(const RunAnalysis& a);
 // Blocking levels (for checking the plateau by eye).
-std::string blocking_csv(const BlockingResult& b);
+std::string blocking_csv(const stats::BlockingResult& b);
 
 }  // namespace brash::post

@@ -1,12 +1,12 @@
 // Early-stop rule and its replay (early_stop.hpp).
-#include "brash/post/early_stop.hpp"
+#include "brash/stats/early_stop.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
 
-namespace brash::post {
+namespace brash::stats {
 
 EarlyStopVerdict early_stop_verdict(std::span<const double> r, double t, double t0, double t1, double rel_ci,
                                     bool trend_check) {
@@ -56,4 +56,4 @@ EarlyStopReplay replay_early_stop(std::span<const double> t_s, std::span<const d
   return out;
 }
 
-}  // namespace brash::post
+}  // namespace brash::stats

@@ -12,8 +12,8 @@
 // Residual bias: adjacent block means remain correlated (correlation ~ tau/b), so s_k^2 is low by
 // about 2 rho1_k; we multiply by max(1, 1 + 2 (rho1_k + 1/n_k)), rho1_k the lag-1 autocorrelation of
 // the level-k block means (+1/n_k undoes its small-sample bias).
-// CI95 = t_{0.975, n_k - 1} * s_k * sqrt(correction).
-// Checked (tests/postproc/test_blocking.cpp) on AR(1) with phi <= 0.9 (tau_int <= 9.5 samples) and
+// CI95 = t_{0.975, n_k - 1} * s_k * sqrt(correction) (student_t975, brash/stats/student_t.hpp).
+// Checked (tests/stats/test_blocking.cpp) on AR(1) with phi <= 0.9 (tau_int <= 9.5 samples) and
 // N >= 2500: the estimated Var(mean), averaged over 40 seeds, is within 10 % of the exact value.
 // For N < ~250 tau_int it underestimates (phi 0.95, N 2500: about -13 %).
 #pragma once
@@ -22,7 +22,7 @@
 #include <span>
 #include <vector>
 
-namespace brash::post {
+namespace brash::stats {
 
 struct BlockLevel {
   std::size_t block_size = 0;  // samples per block
@@ -60,7 +60,4 @@ struct HalvesTrend {
 };
 HalvesTrend halves_trend(std::span<const double> x);
 
-// Two-sided 95 % Student-t quantile t_{0.975, dof} (table for dof <= 30, Cornish-Fisher above).
-double student_t975(std::size_t dof);
-
-}  // namespace brash::post
+}  // namespace brash::stats

@@ -1,13 +1,13 @@
 // Flyvbjerg-Petersen block averaging with a documented plateau rule (see blocking.hpp).
-#include <brash/post/blocking.hpp>
+#include <brash/stats/blocking.hpp>
+#include <brash/stats/student_t.hpp>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
 
-namespace brash::post {
+namespace brash::stats {
 namespace {
 
 constexpr double kAgreeSigmas = 2.0;  // plateau: later levels within 2 combined standard errors
@@ -39,20 +39,6 @@ std::vector<double> halve(std::span<const double> x) {
 }
 
 }  // namespace
-
-double student_t975(std::size_t dof) {
-  static constexpr std::array<double, 30> kTable{
-      12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228,
-      2.201,  2.179, 2.160, 2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086,
-      2.080,  2.074, 2.069, 2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042};
-  if (dof == 0) return INFINITY;
-  if (dof <= kTable.size()) return kTable[dof - 1];
-  // Cornish-Fisher expansion around the normal quantile; error < 1e-4 for dof > 30.
-  const double z = 1.959963984540054, n = static_cast<double>(dof);
-  const double z3 = z * z * z, z5 = z3 * z * z, z7 = z5 * z * z;
-  return z + (z3 + z) / (4 * n) + (5 * z5 + 16 * z3 + 3 * z) / (96 * n * n) +
-         (3 * z7 + 19 * z5 + 17 * z3 - 15 * z) / (384 * n * n * n);
-}
 
 BlockingResult block_average(std::span<const double> x, std::size_t min_blocks) {
   if (x.size() < 2) throw std::invalid_argument("block_average: need at least 2 samples");
@@ -107,4 +93,4 @@ HalvesTrend halves_trend(std::span<const double> x) {
   return t;
 }
 
-}  // namespace brash::post
+}  // namespace brash::stats

@@ -1,6 +1,6 @@
-// The early-stop rule of `speedups.early_stop_rel_ci`, in one place: the LIGGGHTS runner stops the engine when
-// it holds, and `brash-post early-stop` replays it on a finished run's record to measure what it would have saved
-// (model time not simulated) and what it costs (window mean at the stop vs the full window's).
+// The early-stop rule of `speedups.early_stop_rel_ci`, in one place: the LIGGGHTS and ODE runners stop the engine
+// when it holds, and `brash-post early-stop` replays it on a finished run's record to measure what it would have
+// saved (model time not simulated) and what it costs (window mean at the stop vs the full window's).
 //
 // Rule, checked at model time t with the averaging window [t0, t1] and the resistance samples since t0:
 // stop when t >= t0 + 0.4 (t1 - t0), there are >= 64 samples, block averaging finds a plateau (the CI is not a
@@ -11,9 +11,9 @@
 #include <cstddef>
 #include <span>
 
-#include "brash/post/blocking.hpp"
+#include "brash/stats/blocking.hpp"
 
-namespace brash::post {
+namespace brash::stats {
 
 inline constexpr double kEarlyStopFirstCheckFraction = 0.4;  // of the window, before the first check
 inline constexpr std::size_t kEarlyStopMinSamples = 64;
@@ -41,4 +41,4 @@ struct EarlyStopReplay {
 EarlyStopReplay replay_early_stop(std::span<const double> t_s, std::span<const double> resistance_N, double t0_s,
                                   double t1_s, double rel_ci, double check_every_s, bool trend_check = true);
 
-}  // namespace brash::post
+}  // namespace brash::stats

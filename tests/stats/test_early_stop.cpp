@@ -1,4 +1,4 @@
-// The early-stop rule (brash/post/early_stop.hpp) on synthetic records (AR(1) noise, fixed seeds): a stationary
+// The early-stop rule (brash/stats/early_stop.hpp) on synthetic records (AR(1) noise, fixed seeds): a stationary
 // noisy resistance stops once its CI is small enough, with the mean inside that CI; a ramp is held back by the
 // trend check where the CI alone would let it stop; no check before 40 % of the window or 64 samples.
 #include <gtest/gtest.h>
@@ -8,9 +8,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include "brash/post/early_stop.hpp"
+#include "brash/stats/early_stop.hpp"
 
-using namespace brash::post;
+using namespace brash::stats;
 
 namespace {
 

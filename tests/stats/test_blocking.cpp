@@ -5,9 +5,9 @@
 #include <random>
 #include <vector>
 
-#include <brash/post/blocking.hpp>
+#include <brash/stats/blocking.hpp>
 
-using namespace brash::post;
+using namespace brash::stats;
 
 namespace {
 
@@ -33,14 +33,6 @@ double ar1_var_of_mean(double phi, std::size_t n) {
 }
 
 }  // namespace
-
-TEST(Blocking, StudentQuantiles) {
-  EXPECT_NEAR(student_t975(1), 12.706, 1e-3);
-  EXPECT_NEAR(student_t975(15), 2.131, 1e-3);
-  EXPECT_NEAR(student_t975(40), 2.021, 1e-3);
-  EXPECT_NEAR(student_t975(120), 1.980, 1e-3);
-  EXPECT_NEAR(student_t975(100000), 1.95998, 1e-4);
-}
 
 TEST(Blocking, ConstantAndWhiteNoise) {
   const std::vector<double> c(100, 3.5);
