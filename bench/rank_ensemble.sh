@@ -100,59 +100,9 @@ for side in "${sides[@]}"; do
   done
   wait
 done
-/usr/bin/python3 - "$out" "$n_seeds" "$(basename "$case_src")" "${sides[0]}" "${sides[1]}" \
-  "$(side_name "${sides[0]}")" "$(side_name "${sides[1]}")" "${TOL_PCT:-1}" \
-  "$(side_label "${sides[0]}")" "$(side_label "${sides[1]}")" <<'EOF'
-import json, math, os, sys
-out, n, case, side_a, side_b, name_a, name_b, tol_pct, la, lb = sys.argv[1], int(sys.argv[2]), *sys.argv[3:]
-tol = float(tol_pct) / 100
-# Student t 97.5 % quantiles for 1..30 degrees of freedom (then ~1.96)
-T = [12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228, 2.201, 2.179, 2.160, 2.145, 2.131,
-     2.120, 2.110, 2.101, 2.093, 2.086, 2.080, 2.074, 2.069, 2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042]
-def wall_s(run):
-    try:
-        return float(json.load(open(os.path.join(out, run, 'meta.json')))['wall_time_s'])
-    except (OSError, ValueError, KeyError, TypeError):
-        return float('nan')
-def mean_N(run):
-    try:
-        r = json.load(open(os.path.join(out, run, 'report.json')))
-    except (OSError, ValueError):
-        return None
-    if r.get('status') != 'complete':
-        return None
-    return r['resistance_model_N']['mean']
-print('== %s, one packing seed per pair, mean resistance over its window, model scale' % case)
-print('| seed | A: %s [N] | B: %s [N] | (B - A) / mean |' % (la, lb))
-print('|---|---|---|---|')
-d, ras, rbs, was, wbs = [], [], [], [], []
-for s in range(1, n + 1):
-    a, b = mean_N('s%d-%s' % (s, name_a)), mean_N('s%d-%s' % (s, name_b))
-    if a is None or b is None:
-        print('| %d | %s | %s | (incomplete) |' % (s, a or '-', b or '-')); continue
-    d.append((b - a) / (0.5 * (a + b))); ras.append(a); rbs.append(b)
-    was.append(wall_s('s%d-%s' % (s, name_a))); wbs.append(wall_s('s%d-%s' % (s, name_b)))
-    print('| %d | %.3f | %.3f | %+.2f %% |' % (s, a, b, 100 * d[-1]))
-k = len(d)
-if k < 2:
-    print('fewer than 2 complete pairs: no ensemble statement'); sys.exit(0)
-mean = sum(d) / k
-sd = math.sqrt(sum((x - mean) ** 2 for x in d) / (k - 1))
-ci = (T[k - 2] if k - 1 <= len(T) else 1.96) * sd / math.sqrt(k)
-print('pairs: %d; ensemble mean A (%s) %.3f N, B (%s) %.3f N' % (k, la, sum(ras) / k, lb, sum(rbs) / k))
-print('paired difference (B - A): %+.2f %% +- %.2f %% (95 %% CI), sd of one pair %.2f %%' % (100 * mean, 100 * ci, 100 * sd))
-print('wall time: A %.0f s, B %.0f s in all; speed-up of B over A %.2fx' % (sum(was), sum(wbs), sum(was) / sum(wbs)))
-lo, hi = mean - ci, mean + ci
-# machine-readable summary, OUT/ensemble-<A>-vs-<B>.json, read by bench/pareto_plot.sh
-with open(os.path.join(out, 'ensemble-%s-vs-%s.json' % (name_a, name_b)), 'w') as f:
-    json.dump({'case': case, 'side_a': side_a, 'side_b': side_b, 'pairs': k, 'mean_a_N': sum(ras) / k,
-               'mean_b_N': sum(rbs) / k, 'diff_rel': mean, 'ci95_rel': ci, 'sd_rel': sd, 'wall_a_s': sum(was),
-               'wall_b_s': sum(wbs), 'speedup': sum(was) / sum(wbs)}, f, indent=1)
-t = '%g' % (100 * tol)
-if -tol < lo and hi < tol:
-    print('WITHIN %s %%: the 95 %% CI [%+.2f, %+.2f] %% lies inside [-%s, +%s] %%' % (t, 100 * lo, 100 * hi, t, t))
-else:
-    need = math.ceil((1.96 * sd / max(1e-9, tol - abs(mean))) ** 2) if abs(mean) < tol else None
-    print('NOT SHOWN: the 95 %% CI [%+.2f, %+.2f] %% is not inside [-%s, +%s] %%%s' % (
-        100 * lo, 100 * hi, t, t, '' if need is None else '; about %d pairs would resolve it at this scatter' % need))
-EOF
+# the table, the ensemble statement and OUT/ensemble-<A>-vs-<B>.json (read by brash-study-report and
+# bench/pareto_plot.sh): the mean paired difference with its Student-t 95 % CI (brash/stats/paired.hpp)
+"$bin/brash-post" paired-ensemble "$out" --seeds "$n_seeds" --case "$(basename "$case_src")" \
+  --side-a "${sides[0]}" --side-b "${sides[1]}" --name-a "$(side_name "${sides[0]}")" \
+  --name-b "$(side_name "${sides[1]}")" --label-a "$(side_label "${sides[0]}")" \
+  --label-b "$(side_label "${sides[1]}")" --tol-pct "${TOL_PCT:-1}"

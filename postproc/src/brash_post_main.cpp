@@ -1,5 +1,5 @@
 // brash-post: postprocess a run directory (report, plots, ParaView files), print FSICR R_CH for
-// given parameters, or compare runs. Thin CLI over brash_post.
+// given parameters, compare runs, replay the early stop or summarize a paired-seed ensemble. Thin CLI over brash_post.
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -12,6 +12,7 @@
 #include <brash/error.hpp>
 #include <brash/run_layout.hpp>
 #include <brash/stats/early_stop.hpp>
+#include <brash/post/ensemble.hpp>
 #include <brash/post/fsicr.hpp>
 #include <brash/post/particles.hpp>
 #include <brash/post/plots.hpp>
@@ -184,6 +185,14 @@ int run_fsicr(const brash::FsicrParams& p, const std::string& ice_class) {
   return 0;
 }
 
+// The paired-seed ensemble summary (ensemble.hpp): table and statement on stdout, the JSON beside the runs.
+int run_paired_ensemble(const EnsembleSpec& spec) {
+  const auto s = summarize_ensemble(spec, read_ensemble(spec));
+  if (s.json) brash::run::write_atomic(s.json_path, s.json->dump(1));
+  fmt::print("{}", s.text);
+  return 0;
+}
+
 #ifdef BRASH_POST_HAVE_STABILITY
 // Stability verdict and measures of one run (docs/stability.md, "Engine stability map"): JSON on stdout and
 // in OUT (default RUN_DIR/stability.json).
@@ -248,6 +257,25 @@ int main(int argc, char** argv) {
   early->add_option("--check-every", early_every,
                     "model time between checks [s] (default: the LIGGGHTS runner's, 1/200 of the record)");
 
+  auto* ensemble = app.add_subcommand(
+      "paired-ensemble",
+      "a paired-seed ensemble (bench/rank_ensemble.sh): the mean of the pairs' relative differences (B - A) / mean "
+      "with its 95 % CI, as a table and DIR/ensemble-<A>-vs-<B>.json");
+  EnsembleSpec espec;
+  double tol_pct = 1;
+  ensemble->add_option("DIR", espec.dir, "folder holding the runs s<seed>-<run name>")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  ensemble->add_option("--seeds", espec.seeds, "seeds 1 .. N")->required();
+  ensemble->add_option("--case", espec.case_name, "case name (table title, JSON \"case\")")->required();
+  ensemble->add_option("--side-a", espec.a.spec, "side A as given to rank_ensemble.sh (JSON \"side_a\")")->required();
+  ensemble->add_option("--side-b", espec.b.spec, "side B (JSON \"side_b\")")->required();
+  ensemble->add_option("--name-a", espec.a.run_name, "run name of side A: runs are DIR/s<seed>-<name>")->required();
+  ensemble->add_option("--name-b", espec.b.run_name, "run name of side B")->required();
+  ensemble->add_option("--label-a", espec.a.label, "side A as the table prints it (default: its run name)");
+  ensemble->add_option("--label-b", espec.b.label, "side B as the table prints it");
+  ensemble->add_option("--tol-pct", tol_pct, "tolerance the CI is tested against [%]")->capture_default_str();
+
 #ifdef BRASH_POST_HAVE_STABILITY
   auto* stability = app.add_subcommand(
       "stability",
@@ -275,6 +303,10 @@ int main(int argc, char** argv) {
     if (fsicr->parsed()) return run_fsicr(p, ice_class);
     if (compare->parsed()) return run_compare(compare_runs, compare_out);
     if (early->parsed()) return run_early_stop(early_run, early_rel, early_every, !early_no_trend);
+    if (ensemble->parsed()) {
+      espec.tol = tol_pct / 100;
+      return run_paired_ensemble(espec);
+    }
 #ifdef BRASH_POST_HAVE_STABILITY
     if (stability->parsed()) {
       if (above_water > 0) sopt.above_water_m = above_water;

@@ -1,0 +1,56 @@
+// A paired-seed ensemble's summary (bench/rank_ensemble.sh, `brash-post paired-ensemble`): every packing seed s run
+// as side A in DIR/s<s>-<name A> and as side B in DIR/s<s>-<name B>; each complete pair gives the relative
+// difference of the window-mean resistances (B - A) / mean of the pair, and the ensemble its mean with the Student-t
+// 95 % CI (brash/stats/paired.hpp). B is within TOL of A when that CI lies inside (-TOL, +TOL).
+//
+// Output: a markdown table of the pairs and the ensemble statement (text), and DIR/ensemble-<A>-vs-<B>.json with
+// case, side_a, side_b (the side specs), pairs, mean_a_N, mean_b_N, diff_rel, ci95_rel, sd_rel, wall_a_s, wall_b_s
+// (summed meta.json wall_time_s; null when a run has none) and speedup (wall A / wall B), read by
+// brash-study-report (`paired` rows) and bench/pareto_plot.sh. With fewer than 2 complete pairs there is no
+// statement and no JSON.
+#pragma once
+#include <cmath>
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace brash::post {
+
+struct EnsembleSide {
+  std::string spec;      // as given to bench/rank_ensemble.sh: NP[:section.key=value,...], ode[@DT[@IT]]
+  std::string run_name;  // run directories are DIR/s<seed>-<run_name>
+  std::string label;     // as the table prints it ("2 ranks"); run_name when empty
+};
+
+struct EnsembleSpec {
+  std::filesystem::path dir;
+  std::size_t seeds = 0;  // seeds 1 .. seeds
+  std::string case_name;
+  EnsembleSide a, b;
+  double tol = 0.01;      // relative tolerance the CI is tested against
+};
+
+// One seed: each side's window-mean resistance [N] when its report.json says "complete", and its wall time [s]
+// (NaN without meta.json wall_time_s).
+struct EnsemblePair {
+  std::size_t seed = 0;
+  std::optional<double> a_N, b_N;
+  double wall_a_s = NAN, wall_b_s = NAN;
+  bool complete() const { return a_N && b_N; }
+};
+
+std::vector<EnsemblePair> read_ensemble(const EnsembleSpec& spec);
+
+struct EnsembleSummary {
+  std::string text;                             // table and statement, as printed
+  std::optional<nlohmann::ordered_json> json;   // none with fewer than 2 complete pairs
+  std::filesystem::path json_path;              // DIR/ensemble-<A>-vs-<B>.json
+};
+
+EnsembleSummary summarize_ensemble(const EnsembleSpec& spec, const std::vector<EnsemblePair>& pairs);
+
+}  // namespace brash::post
