@@ -35,7 +35,7 @@
 #include <brash/error.hpp>
 #include <brash/post/force_history.hpp>
 #include <brash/post/report.hpp>
-#include <brash/stats/student_t.hpp>
+#include <brash/stats/power_law.hpp>
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -255,43 +255,11 @@ std::string num(double v, int prec = 2) {
 std::string pm(double v, double ci, int prec = 2) { return fmt::format("{} ± {}", num(v, prec), num(ci, prec)); }
 std::string optnum(const std::optional<double>& v, int prec = 2) { return v ? num(*v, prec) : "n/a"; }
 
-struct Fit {
+// R = a U^n per engine and fluid model (R in N at model scale, U in m/s): brash/stats/power_law.hpp.
+struct Fit : brash::stats::PowerLawFit {
   std::string engine, model;
-  std::size_t points = 0;
-  double n = NAN, n_se = NAN, a = NAN;  // R = a U^n (R in N at model scale, U in m/s)
-  double n_ci95 = NAN;                   // t_{0.975, points - 2} x n_se
   std::vector<std::string> refs;
 };
-
-// Least squares of ln R = ln a + n ln U; SE of the slope from the residual variance (needs >= 3 points).
-Fit fit_power_law(const std::vector<std::pair<double, double>>& uv) {
-  Fit f;
-  f.points = uv.size();
-  if (uv.size() < 2) return f;
-  double sx = 0, sy = 0;
-  for (auto [u, r] : uv) sx += std::log(u), sy += std::log(r);
-  const double k = static_cast<double>(uv.size());
-  const double mx = sx / k, my = sy / k;
-  double sxx = 0, sxy = 0;
-  for (auto [u, r] : uv) {
-    const double dx = std::log(u) - mx;
-    sxx += dx * dx;
-    sxy += dx * (std::log(r) - my);
-  }
-  if (sxx <= 0) return f;
-  f.n = sxy / sxx;
-  f.a = std::exp(my - f.n * mx);
-  if (uv.size() >= 3) {
-    double ssr = 0;
-    for (auto [u, r] : uv) {
-      const double e = std::log(r) - (my + f.n * (std::log(u) - mx));
-      ssr += e * e;
-    }
-    f.n_se = std::sqrt(ssr / (k - 2.0) / sxx);
-    f.n_ci95 = brash::stats::student_t975(uv.size() - 2) * f.n_se;
-  }
-  return f;
-}
 
 std::string scale_label(const Run& r) {
   const std::string window = fmt::format("window [{}, {}] s", num(r.window0), num(r.window1));
@@ -1058,17 +1026,13 @@ void section_speed(Study& s, std::string& md, const fs::path& plot_png, json& su
   md += "\n| engine | fluid model | speeds | n ± CI95 (SE) | a in R = a U^n [N] | runs |\n|---|---|---|---|---|---|\n";
   std::vector<Fit> fits;
   for (auto& [k, g] : groups) {
-    std::vector<std::pair<double, double>> uv;
-    Fit f;
+    std::vector<double> speeds, means;
     std::vector<std::string> refs;
     for (const Run* r : g) {
       refs.push_back(r->ref);
-      if (r->speed > 0 && r->mean_N > 0) uv.emplace_back(r->speed, r->mean_N);
+      if (r->speed > 0 && r->mean_N > 0) speeds.push_back(r->speed), means.push_back(r->mean_N);
     }
-    f = fit_power_law(uv);
-    f.engine = k.first;
-    f.model = k.second;
-    f.refs = refs;
+    const Fit f{brash::stats::fit_power_law(speeds, means), k.first, k.second, refs};
     std::string refs_s;
     for (const auto& x : refs) refs_s += (refs_s.empty() ? "" : ", ") + x;
     const std::string nse = std::isfinite(f.n_se) ? fmt::format("{:.3f} ± {:.3f} (SE {:.3f})", f.n, f.n_ci95, f.n_se)
