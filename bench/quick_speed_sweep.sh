@@ -3,7 +3,9 @@
 # bow travel as the case's own 11 s at 0.482 m/s (duration 11 s x 0.482 / U, rounded to the 0.008 s output
 # interval), window its last 40 %: the stem ends ~1.9 m from the far end at every speed, and the window starts
 # after 6.6 s-at-0.482 m/s of travel (the slower the ship, the longer the ice ahead of the bow takes to settle: at
-# 0.3 m/s the last 50 % still drifted with drag, the last 40 % did not).
+# 0.3 m/s the last 50 % still drifted with drag, the last 40 % did not). The contact band reaches 0.3 m below the
+# waterline at every speed (the case's 0.2 m held the ice up to 0.482 m/s, deepest piece bottom 0.175 m; at
+# 0.7 m/s pieces reached 0.204 m, at 1.0 m/s one passed under the band into the hull and the guard stopped the run).
 #   bash bench/quick_speed_sweep.sh [WORK_DIR]   (default runs/quick-speed; env SPEEDS, MODELS, JOBS)
 # Runs JOBS (default 2) single-rank runs at a time, slowest first (~25 min on 2 cores); a run directory that
 # already holds a report is kept. WORK_DIR/<case>_<model>.cmd holds the commands that made each run (the study's
@@ -22,7 +24,7 @@ for u in $speeds; do
   w0=$(awk -v d="$dur" 'BEGIN { printf "%.3f", 0.6 * d }')
   name="quick_u$u"
   new=(new "$name" --cases-dir "$work/cases" --template cases/jbc_quick/case.yaml --speed "$u" --duration "$dur"
-       --window "$w0" "$dur" --force)
+       --window "$w0" "$dur" --band 0.3 0.1 --force)
   (cd "$here" && "$bin/brash-case" "${new[@]}") > "$work/cases/$name.log"
   echo "brash-case ${new[*]} && brash-pack $work/cases/$name" > "$work/cases/$name.cmd"
   for m in $models; do echo "$u $name $m" >> "$work/jobs.txt"; done

@@ -48,7 +48,7 @@ struct NewCaseOptions {
   std::string name, cases_dir = "cases", templ, description, fluid_model, treatment, ice_class, packing_mode;
   std::optional<double> speed, scale, length, width, thickness, diameter, diameter_sd, porosity, friction_ice,
       friction_hull, friction_wall, duration;
-  std::vector<double> window;
+  std::vector<double> window, band;
   std::optional<std::uint64_t> seed;
   bool force = false;
 };
@@ -77,6 +77,7 @@ int make_case(const NewCaseOptions& o) {
                              k, n["hull"]["file"].as<std::string>(), *o.scale);
   }
   if (o.speed) n["ship"]["speed_m_s"] = text(*o.speed);
+  if (!o.band.empty()) n["hull"]["band_m"] = flow_pair(o.band.at(0), o.band.at(1));
   if (!o.ice_class.empty()) n["ship"]["ice_class"] = o.ice_class;
   if (o.length) n["channel"]["length_m"] = text(*o.length);
   if (o.width) n["channel"]["width_m"] = text(*o.width);
@@ -161,6 +162,8 @@ int main(int argc, char** argv) {
   nw->add_option("--treatment", o.treatment, "implicit | explicit");
   nw->add_option("--duration", o.duration, "simulated time [s]");
   nw->add_option("--window", o.window, "averaging window START END [s]")->expected(2);
+  nw->add_option("--band", o.band, "contact hull band BELOW ABOVE the waterline [m] (hull.band_m; deeper for faster "
+                                   "ships: the bow pushes the ice deeper)")->expected(2);
   nw->add_flag("--force", o.force, "overwrite an existing case.yaml");
   CLI11_PARSE(app, argc, argv);
   try {

@@ -124,7 +124,7 @@ TEST(BrashCase, NewCaseFromParameters) {
   const std::string cmd = (kBin / "brash-case").string() + " new my_case --cases-dir " + dir.string() +
                           " --speed 0.3 --scale 28.5 --width 1.8 --thickness 0.05 --diameter 0.025"
                           " --friction-ice 1.0 --friction-hull 0.05 --fluid-model drag --treatment explicit"
-                          " --duration 10";
+                          " --duration 10 --band 0.3 0.1";
   ASSERT_EQ(run(cmd, dir / "log.txt"), 0) << slurp(dir / "log.txt");
   const brash::Case c = brash::load_case(dir / "my_case/case.yaml");
   EXPECT_EQ(c.name, "my_case");
@@ -144,6 +144,8 @@ TEST(BrashCase, NewCaseFromParameters) {
   EXPECT_DOUBLE_EQ(c.run.duration_s, 10.0);
   EXPECT_DOUBLE_EQ(c.run.window_s[0], 4.0);
   EXPECT_DOUBLE_EQ(c.run.window_s[1], 10.0);
+  ASSERT_TRUE(c.hull.band_m.has_value());
+  EXPECT_EQ(*c.hull.band_m, (std::array<double, 2>{0.3, 0.1}));
   EXPECT_EQ(c.ice.packing_file, fs::absolute(dir / "my_case/generated/packing.csv").lexically_normal());
   // Existing case: refused without --force.
   EXPECT_EQ(run(cmd, dir / "log2.txt"), 2);
