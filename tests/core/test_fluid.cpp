@@ -153,6 +153,27 @@ TEST(Params, ParseEnumsAndRejectUnknown) {
   EXPECT_EQ(to_string(parse_fluid_model("added_mass")), "added_mass");
 }
 
+TEST(Params, CaTableSpellingReadsBackAsTheSameTable) {  // fix icefluid's `ca` text, written by the runner
+  const auto same = [](const CaTable& a, const CaTable& b) {
+    return a.above == b.above && a.submerged == b.submerged && a.submerged_reversed == b.submerged_reversed &&
+           a.partial == b.partial && a.partial_reversed == b.partial_reversed;
+  };
+  EXPECT_EQ(ca_table_spelling(CaTable::table1()), "table1");
+  EXPECT_EQ(ca_table_spelling(CaTable::text_variant()), "text");
+  EXPECT_EQ(ca_table_spelling(CaTable::uniform(0.0)), "zero");
+  EXPECT_EQ(ca_table_spelling(CaTable::uniform(0.25)), "uniform 0.25");
+  for (const char* text : {"table1", "text", "zero", "uniform 0.25", "uniform 2", "uniform 0.1"}) {
+    const CaTable t = parse_ca_table(text);
+    EXPECT_EQ(ca_table_spelling(t), text);
+    EXPECT_TRUE(same(parse_ca_table(ca_table_spelling(t)), t)) << text;
+  }
+  const CaTable third = CaTable::uniform(1.0 / 3.0);  // shortest round-trip digits, not rounded ones
+  EXPECT_TRUE(same(parse_ca_table(ca_table_spelling(third)), third));
+  CaTable custom = CaTable::table1();
+  custom.partial.z() = 0.7;  // no name: an engine command cannot carry it
+  EXPECT_THROW((void)ca_table_spelling(custom), brash::InputError);
+}
+
 TEST(Params, UniformCaTableFromText) {  // the case file's "ca_table: uniform <Ca>" (stability map)
   const CaTable t = parse_ca_table("uniform 2");
   for (const Vec3& v : {t.submerged, t.submerged_reversed, t.partial, t.partial_reversed})

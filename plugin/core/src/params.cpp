@@ -14,6 +14,11 @@ namespace {
 
 bool finite(const Vec3& v) { return v.allFinite(); }
 
+bool same_table(const CaTable& a, const CaTable& b) {
+  return a.above == b.above && a.submerged == b.submerged && a.submerged_reversed == b.submerged_reversed &&
+         a.partial == b.partial && a.partial_reversed == b.partial_reversed;
+}
+
 void check_ca(std::vector<std::string>& out, const char* name, const Vec3& ca) {
   if (!finite(ca) || (ca.array() < 0).any())
     out.push_back(fmt::format("ca.{} = ({}, {}, {}): added-mass coefficients must be finite and >= 0", name,
@@ -83,6 +88,19 @@ CaTable parse_ca_table(std::string_view s) {
   }
   throw InputError(
       fmt::format("unknown added-mass table '{}' (expected table1 | text | zero | uniform <Ca >= 0>)", s));
+}
+
+std::string ca_table_spelling(const CaTable& t) {
+  if (same_table(t, CaTable::table1())) return "table1";
+  if (same_table(t, CaTable::text_variant())) return "text";
+  const double ca = t.submerged.x();
+  if (same_table(t, CaTable::uniform(ca))) return ca == 0.0 ? "zero" : fmt::format("uniform {}", ca);
+  throw InputError(fmt::format(
+      "added-mass table (submerged {} {} {}, submerged_reversed {} {} {}, partial {} {} {}, partial_reversed {} {} "
+      "{}) has no name (table1 | text | zero | uniform <Ca>)",
+      t.submerged.x(), t.submerged.y(), t.submerged.z(), t.submerged_reversed.x(), t.submerged_reversed.y(),
+      t.submerged_reversed.z(), t.partial.x(), t.partial.y(), t.partial.z(), t.partial_reversed.x(),
+      t.partial_reversed.y(), t.partial_reversed.z()));
 }
 
 }  // namespace brash::core

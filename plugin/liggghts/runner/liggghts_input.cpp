@@ -6,7 +6,9 @@
 
 #include <fmt/format.h>
 
+#include "brash/case_fluid.hpp"
 #include "brash/guard.hpp"
+#include "icefluid_arguments.h"
 
 namespace brash::liggghts {
 
@@ -170,11 +172,7 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
   s += fmt::format("fix exit all brash/exit xlo {:.9g} xhi {:.9g}\n", gb[0] + skin_m, gb[1] - skin_m);
   // fluid forces last: implicit added mass scales the sum of all other forces
   s += fmt::format(
-      "fix fl {} icefluid model {} treatment {} cd {:.9g} drag_law {} nu {:.9g} ca {} water_level {:.9g} "
-      "water_density {:.9g} g {:.9g} output_every {}{}\n",
-      moving, to_string(c.fluid.model), to_string(c.fluid.treatment), c.fluid.drag_coefficient,
-      to_string(c.fluid.drag_law), c.water.kinematic_viscosity_m2_s, to_string(c.fluid.ca_table),
-      c.water.level_m, c.water.density_kg_m3, c.water.gravity_m_s2, dump_every,
+      "fix fl {} icefluid {} output_every {}{}\n", moving, icefluid_arguments(brash::fluid_params(c)), dump_every,
       // the flow around the hull: the full hull, its frame's origin at t = 0 and speed, as fix hull above
       c.fluid.hull_flow == HullFlow::ThinShip
           ? fmt::format(" hull_flow {} {:.9g} 0 {:.9g} {:.9g}", opt.flow_hull_file, hull_x0, -c.hull.draft_m,

@@ -70,5 +70,9 @@ FluidModel parse_fluid_model(std::string_view s);
 Treatment parse_treatment(std::string_view s);
 DragLaw parse_drag_law(std::string_view s);
 CaTable parse_ca_table(std::string_view s);  // "table1" | "text" | "zero" | "uniform <Ca>" (Ca >= 0)
+// The inverse: the text parse_ca_table() reads back as exactly `t` ("zero" for a uniform 0, "uniform <Ca>" with
+// the shortest round-trip number). Throws brash::InputError for a table with no such name (engine commands
+// such as fix icefluid's `ca` keyword only take named tables).
+std::string ca_table_spelling(const CaTable& t);
 
 }  // namespace brash::core
