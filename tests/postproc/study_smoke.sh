@@ -65,7 +65,7 @@ test ! -e "$tmp/paper/paper-liggghts-drag-20s"
 qs="1:contact.youngs_modulus_pa=3.125e5,run.timestep_s=8.0e-4"
 mkdir -p "$tmp/paper/fluid-reading"
 cat > "$tmp/paper/fluid-reading/ensemble-smoke.json" <<JSON
-{ "side_a": "$qs", "side_b": "$qs,fluid.model=drag", "case": "jbc_narrow", "pairs": 3,
+{ "side_a": "$qs,fluid.model=added_mass", "side_b": "$qs,fluid.model=drag", "case": "jbc_narrow", "pairs": 3,
   "mean_a_N": 10.0, "mean_b_N": 12.5, "diff_rel": 0.2222, "ci95_rel": 0.0123 }
 JSON
 study
