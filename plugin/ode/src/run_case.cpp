@@ -16,6 +16,7 @@
 #include <unordered_map>
 
 #include "brash/case.hpp"
+#include "brash/case_fluid.hpp"
 #include "brash/error.hpp"
 #include "brash/guard.hpp"
 #include "brash/hull/flow.hpp"
@@ -141,20 +142,6 @@ void check_packing(const std::vector<Sphere>& s, const fs::path& file, double to
     for (const auto& b : bad) msg += "\n  " + b;
     throw InputError(msg);
   }
-}
-
-core::FluidParams fluid_params(const Case& c) {
-  core::FluidParams p;
-  p.water_density_kg_m3 = c.water.density_kg_m3;
-  p.water_level_m = c.water.level_m;
-  p.gravity_m_s2 = c.water.gravity_m_s2;
-  p.kinematic_viscosity_m2_s = c.water.kinematic_viscosity_m2_s;
-  p.model = c.fluid.model;
-  p.treatment = c.fluid.treatment;
-  p.drag_law = c.fluid.drag_law;
-  p.drag_coefficient = c.fluid.drag_coefficient;
-  p.ca = core::parse_ca_table(to_string(c.fluid.ca_table));
-  return p;
 }
 
 std::string hms(double s) {
@@ -321,7 +308,7 @@ RunResult run_case(const RunOptions& cli_options) {
     logln("warning: --cull freezes the ice outside the window (no wake rule): the push of the bow cannot reach past "
           "it, which raised the mean resistance by +8 to +20 % in paired LIGGGHTS ensembles");
 
-  const auto fluid = fluid_params(c);
+  const auto fluid = brash::fluid_params(c);
   nlohmann::json meta = {
       {"engine", "ode"},
       {"engine_version", fmt::format("brash-ode 0.1 + ODE {} (Debian libode, double, dWorldQuickStep)", "0.16.2")},
