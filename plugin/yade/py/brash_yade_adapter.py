@@ -29,7 +29,9 @@ class FluidAdapter:
     """Fluid forces of the brash core on the given YADE sphere ids (same set for the whole run)."""
 
     def __init__(self, ids, model="both", treatment="implicit", cd=0.44, drag_law="constant",
-                 nu=1.79e-6, ca_table="table1", water_level=0.0, water_density=1000.0, g=9.81):
+                 nu=1.79e-6, ca_table="table1", water_level=0.0, water_density=1000.0, g=9.81, fluid=None):
+        """fluid: a brash_yade.Fluid (e.g. Fluid.from_case(case.yaml), gravity applied by the fluid) used instead
+        of the keyword parameters."""
         from yade import O  # imported here so the module can be imported (for docs) outside yade
         self.O = O
         self.ids = [int(i) for i in ids]
@@ -38,9 +40,13 @@ class FluidAdapter:
         self.states = [b.state for b in bodies]
         self.radius = np.array([b.shape.radius for b in bodies], dtype=float)
         self.mass = np.array([b.state.mass for b in bodies], dtype=float)
-        self.fluid = brash_yade.Fluid(model=model, treatment=treatment, cd=cd, drag_law=drag_law, nu=nu,
-                                      ca_table=ca_table, water_level=water_level, water_density=water_density,
-                                      g=g, apply_gravity=True)
+        if fluid is None:
+            fluid = brash_yade.Fluid(model=model, treatment=treatment, cd=cd, drag_law=drag_law, nu=nu,
+                                     ca_table=ca_table, water_level=water_level, water_density=water_density,
+                                     g=g, apply_gravity=True)
+        elif not fluid.apply_gravity:
+            raise ValueError("FluidAdapter: the fluid must apply gravity (NewtonIntegrator.gravity is 0)")
+        self.fluid = fluid
         self.steps = 0
         registry = getattr(__main__, _REGISTRY_NAME, None)
         if registry is None:

@@ -1,6 +1,7 @@
 # brash YADE scene: a case run in YADE, launched by brash-yade-run as
 #   yade -n -j<N> -x brash_yade_scene.py <run_dir>/scene.json
-# in the run directory. scene.json is written by brash-yade-run from the case (every value resolved).
+# in the run directory. scene.json is written by brash-yade-run from the case (every value resolved); the fluid
+# parameters come from the run directory's case.yaml through brash_yade.Fluid.from_case.
 # Writes hull_force.csv, particles/particles_<step>.csv + particles/index.csv, and yade_summary.json;
 # brash-yade-run writes case.yaml and meta.json around it.
 #
@@ -28,6 +29,7 @@ from yade.wrapper import (Bo1_Facet_Aabb, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, ForceR
 from yade.utils import sphere, wall
 Vector3 = yade.Vector3  # minieigen (HP) Vector3 of this YADE build
 
+import brash_yade
 from brash_yade_adapter import FluidAdapter, check_engine_order
 
 
@@ -100,11 +102,13 @@ def main(scene_file):
     log("%d spheres, %d hull facets (imported in %.1f s), 2 side walls at y = +-%.4g m"
         % (len(ice_ids), len(hull_ids), time.time() - t0, half_w))
 
-    fl = s["fluid"]
-    fluid = FluidAdapter(ice_ids, model=fl["model"], treatment=fl["treatment"], cd=fl["drag_coefficient"],
-                         drag_law=fl["drag_law"], nu=s["water"]["kinematic_viscosity_m2_s"], ca_table=fl["ca_table"],
-                         water_level=s["water"]["level_m"], water_density=s["water"]["density_kg_m3"],
-                         g=s["water"]["gravity_m_s2"])
+    # The fluid (water.*, fluid.*) of the run's resolved case.yaml, through brash::fluid_params: the mapping the
+    # LIGGGHTS and ODE runners use.
+    fluid = FluidAdapter(ice_ids, fluid=brash_yade.Fluid.from_case(os.path.join(run_dir, "case.yaml")))
+    fp = fluid.fluid
+    log("fluid (case.yaml): model %s, treatment %s, C_D %g (%s), nu %g m^2/s, Ca %s, water level %g m, density %g "
+        "kg/m^3, g %g m/s^2" % (fp.model, fp.treatment, fp.cd, fp.drag_law, fp.nu, fp.ca_table, fp.water_level,
+                                fp.water_density, fp.g))
 
     # Outputs. hull_force.csv: instantaneous force of the ice on the hull every out_every steps (like the
     # LIGGGHTS path's fix ave/time N 1 N), read after InteractionLoop (contacts only: the fluid engine
@@ -154,7 +158,6 @@ def main(scene_file):
     guard = None
     stop = {"message": None}
     if g:
-        import brash_yade
         guard = brash_yade.Guard(fluid.radius, fluid.mass, box=g["box"], z_max=g["z_max_m"], ke_max=g["ke_max_J"],
                                  max_hull_penetration_d=g["max_hull_penetration_d"], hull_stl=g["hull_stl"],
                                  hull_origin=g["hull_origin_m"], hull_velocity=g["hull_velocity_m_s"])
@@ -204,7 +207,7 @@ def main(scene_file):
 
     bench_steps = int(os.environ.get("BRASH_YADE_BENCH_STEPS", "0"))
     if bench_steps > 0:
-        bench(fluid, bench_steps, s["water"]["gravity_m_s2"])
+        bench(fluid, bench_steps, fluid.fluid.g)
         return
 
     O.timingEnabled = True

@@ -20,6 +20,8 @@
 #include <string>
 #include <vector>
 
+#include "brash/case.hpp"
+#include "brash/case_fluid.hpp"
 #include "brash/core/fluid.hpp"
 #include "brash/core/params.hpp"
 #include "brash/core/reference.hpp"
@@ -280,6 +282,16 @@ PYBIND11_MODULE(brash_yade, mod) {
            py::arg("drag_law") = "constant", py::arg("nu") = 1.79e-6, py::arg("ca_table") = "table1",
            py::arg("water_level") = 0.0, py::arg("water_density") = 1000.0, py::arg("g") = 9.81,
            py::arg("apply_gravity") = true)
+      .def_static(
+          "from_case",
+          [](const std::string& case_file, bool apply_gravity) {
+            FluidParams p = brash::fluid_params(brash::load_case(case_file));
+            p.apply_gravity = apply_gravity;
+            p.validate("brash_yade.Fluid.from_case(" + case_file + ")");
+            return Fluid(std::move(p));
+          },
+          py::arg("case_file"), py::arg("apply_gravity") = true,
+          "the fluid of a case.yaml (water.*, fluid.*) through brash::fluid_params, the mapping every engine uses")
       .def("correction", &Fluid::correction, py::arg("radius"), py::arg("mass"), py::arg("pos"), py::arg("vel"),
            py::arg("force"), py::arg("dt"),
            "force to add per sphere (n,3) so the total is (force + fluid) * scale")
@@ -293,7 +305,15 @@ PYBIND11_MODULE(brash_yade, mod) {
       .def("reset", &Fluid::reset, "forget the per-sphere state (previous velocity)")
       .def("__len__", &Fluid::size)
       .def_property_readonly("model", [](const Fluid& f) { return to_string(f.params().model); })
-      .def_property_readonly("treatment", [](const Fluid& f) { return to_string(f.params().treatment); });
+      .def_property_readonly("treatment", [](const Fluid& f) { return to_string(f.params().treatment); })
+      .def_property_readonly("drag_law", [](const Fluid& f) { return to_string(f.params().drag_law); })
+      .def_property_readonly("cd", [](const Fluid& f) { return f.params().drag_coefficient; })
+      .def_property_readonly("nu", [](const Fluid& f) { return f.params().kinematic_viscosity_m2_s; })
+      .def_property_readonly("ca_table", [](const Fluid& f) { return ca_table_spelling(f.params().ca); })
+      .def_property_readonly("water_level", [](const Fluid& f) { return f.params().water_level_m; })
+      .def_property_readonly("water_density", [](const Fluid& f) { return f.params().water_density_kg_m3; })
+      .def_property_readonly("g", [](const Fluid& f) { return f.params().gravity_m_s2; })
+      .def_property_readonly("apply_gravity", [](const Fluid& f) { return f.params().apply_gravity; });
 
   py::class_<Guard>(mod, "Guard")
       .def(py::init<const Array&, const Array&, const std::vector<double>&, std::optional<double>,
