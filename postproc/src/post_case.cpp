@@ -35,20 +35,17 @@ PostCase read_post_case(const std::filesystem::path& case_yaml) {
   put("A_wf_m2", c.fsicr.A_wf_m2);
   p.psi_override_deg = c.fsicr.psi_deg;
   p.farfield_window_alone = c.speedups.farfield && c.speedups.farfield_wake_force_weight == 0;
-  p.reference_source = c.references.source;
-  p.reference_full_kN = c.references.resistance_full_kN;
-  p.reference_ratio_fsicr_to_sim = c.references.ratio_fsicr_to_sim;
-  p.reference_fsicr_R_CH_kN = c.references.fsicr_R_CH_kN;
+  p.references = c.references;
   return p;
 }
 
-std::optional<PublishedReference> published_reference(const PostCase& c, const std::string& fluid_model) {
+std::optional<PublishedReference> published_reference(const brash::ReferenceSpec& refs, const std::string& fluid_model) {
   const auto find = [&](const std::map<std::string, double>& m) -> std::optional<double> {
     const auto it = m.find(fluid_model);
     return it == m.end() ? std::nullopt : std::optional<double>(it->second);
   };
-  PublishedReference r{c.reference_source, fluid_model, find(c.reference_full_kN), c.reference_fsicr_R_CH_kN,
-                       find(c.reference_ratio_fsicr_to_sim), false};
+  PublishedReference r{refs.source, fluid_model, find(refs.resistance_full_kN), refs.fsicr_R_CH_kN,
+                       find(refs.ratio_fsicr_to_sim), false};
   if (!r.resistance_full_kN && !r.fsicr_R_CH_kN && !r.ratio_fsicr_to_sim) return std::nullopt;
   r.ratio_stated = r.ratio_fsicr_to_sim.has_value();
   if (!r.ratio_stated && r.resistance_full_kN && r.fsicr_R_CH_kN)

@@ -204,7 +204,7 @@ RunAnalysis analyze_run(const std::filesystem::path& run_dir) {
   a.fsicr = resolve_fsicr(a.case_, measured);
   if (a.fsicr.result && a.resistance_full_kN > 0)
     a.ratio_fsicr_to_sim = a.fsicr.result->R_CH_N / 1000.0 / a.resistance_full_kN;
-  a.reference = published_reference(a.case_, run_fluid_model(a));
+  a.reference = published_reference(a.case_.references, run_fluid_model(a));
   return a;
 }
 

@@ -468,18 +468,17 @@ std::vector<const Run*> started_paper_case_runs(Study& s) {
 
 // The paper's full-scale resistance for a fluid model, as the paper case declares it (NaN: none declared).
 double paper_full_kN(const brash::ReferenceSpec& paper, const std::string& model) {
-  const auto it = paper.resistance_full_kN.find(model);
-  return it == paper.resistance_full_kN.end() ? NAN : it->second;
+  const auto r = brash::post::published_reference(paper, model);
+  return r && r->resistance_full_kN ? *r->resistance_full_kN : NAN;
 }
 
 // The paper's FSICR / simulation ratio for a fluid model: as stated where the case declares it, else derived
-// from its two published numbers (the paper states no ratio for drag).
+// from its two published numbers (the paper states no ratio for drag; brash::post::published_reference).
 std::string paper_ratio_cell(const brash::ReferenceSpec& paper, const std::string& model) {
-  if (const auto it = paper.ratio_fsicr_to_sim.find(model); it != paper.ratio_fsicr_to_sim.end())
-    return fmt::format("{:.2f}", it->second);
-  const double kN = paper_full_kN(paper, model);
-  if (!paper.fsicr_R_CH_kN || !std::isfinite(kN)) return "n/a";
-  return fmt::format("{:.2f} ({:.0f} / {:.0f})", *paper.fsicr_R_CH_kN / kN, *paper.fsicr_R_CH_kN, kN);
+  const auto r = brash::post::published_reference(paper, model);
+  if (!r || !r->ratio_fsicr_to_sim) return "n/a";
+  if (r->ratio_stated) return fmt::format("{:.2f}", *r->ratio_fsicr_to_sim);
+  return fmt::format("{:.2f} ({:.0f} / {:.0f})", *r->ratio_fsicr_to_sim, *r->fsicr_R_CH_kN, *r->resistance_full_kN);
 }
 
 // Sensitivity groups (every group but paper, speed and engine), in manifest order.

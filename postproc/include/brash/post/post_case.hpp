@@ -7,6 +7,8 @@
 #include <optional>
 #include <string>
 
+#include <brash/case.hpp>
+
 namespace brash::post {
 
 struct PostCase {
@@ -26,21 +28,17 @@ struct PostCase {
   std::map<std::string, double> fsicr_overrides;
   std::optional<double> psi_override_deg;  // otherwise psi = atan(tan phi2 / sin alpha)
   bool farfield_window_alone = false;  // speedups.farfield with no wake: idle ice was an immovable wall (biased)
-  // references: the published values the case declares (none: the report compares with nothing), full scale,
-  // keyed by fluid model
-  std::string reference_source;
-  std::map<std::string, double> reference_full_kN, reference_ratio_fsicr_to_sim;
-  std::optional<double> reference_fsicr_R_CH_kN;
+  brash::ReferenceSpec references;  // the published values the case declares (none: compared with nothing)
 };
 
-// The case's published values for one fluid model; empty when the case declares none for it.
+// The published values for one fluid model; empty when none is declared for it.
 struct PublishedReference {
   std::string source, fluid_model;
   std::optional<double> resistance_full_kN, fsicr_R_CH_kN;
   std::optional<double> ratio_fsicr_to_sim;  // stated by the source, or its R_CH over its resistance
   bool ratio_stated = false;
 };
-std::optional<PublishedReference> published_reference(const PostCase& c, const std::string& fluid_model);
+std::optional<PublishedReference> published_reference(const brash::ReferenceSpec& refs, const std::string& fluid_model);
 
 PostCase read_post_case(const std::filesystem::path& case_yaml);
 
