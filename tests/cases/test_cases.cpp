@@ -172,3 +172,49 @@ TEST(BrashCase, InvalidValueLeavesNoFolder) {
             2);
   EXPECT_NE(slurp(dir / "log2.txt").find("ice.porosity"), std::string::npos);
 }
+
+// brash-case derive: a variant through the case library (brash/case_derive.hpp); brash-case get: a resolved value.
+TEST(BrashCase, DeriveWritesAValidatedVariant) {
+  const fs::path dir = temp_dir("derive");
+  const std::string bin = (kBin / "brash-case").string();
+  const std::string base = (kRepo / "cases/jbc_quick").string();
+  ASSERT_EQ(run(bin + " derive " + base + " --set fluid.model=drag --set run.duration_s=1.0"
+                    " --set 'run.window_s=[0.375,0.75]' --set 'fluid.ca_table=uniform 0.5' --out " + (dir / "v").string(),
+                dir / "log.txt"),
+            0)
+      << slurp(dir / "log.txt");
+  brash::Case expected = brash::load_case(kRepo / "cases/jbc_quick/case.yaml");
+  expected.fluid.model = brash::FluidModel::Drag;
+  expected.run.duration_s = 1.0;
+  expected.run.window_s = {0.375, 0.75};
+  expected.fluid.ca_table = brash::CaTableSpec::uniform(0.5);
+  EXPECT_EQ(brash::load_case(dir / "v/case.yaml"), expected);
+  // an existing case is kept without --force
+  EXPECT_EQ(run(bin + " derive " + base + " --set ice.seed=2 --out " + (dir / "v").string(), dir / "log2.txt"), 2);
+  EXPECT_NE(slurp(dir / "log2.txt").find("exists"), std::string::npos);
+  EXPECT_EQ(brash::load_case(dir / "v/case.yaml").ice.seed, 1u);
+  ASSERT_EQ(run(bin + " derive " + base + " --set ice.seed=2 --force --out " + (dir / "v").string(), dir / "log3.txt"), 0)
+      << slurp(dir / "log3.txt");
+  const brash::Case s2 = brash::load_case(dir / "v/case.yaml");
+  EXPECT_EQ(s2.ice.seed, 2u);
+  EXPECT_EQ(s2.fluid.model, brash::FluidModel::Both);  // the base's again: only the keys given
+  EXPECT_EQ(s2.ice.packing_file, fs::absolute(dir / "v/generated/packing.csv").lexically_normal());
+  // a bad key or value: exit 2, the message names the key, nothing written
+  for (const std::string key : {"fluid.modle=drag", "ice.porosity=1.5"}) {
+    EXPECT_EQ(run(bin + " derive " + base + " --set " + key + " --out " + (dir / "bad").string(), dir / "log4.txt"), 2);
+    EXPECT_NE(slurp(dir / "log4.txt").find("key '" + key.substr(0, key.find('='))), std::string::npos)
+        << slurp(dir / "log4.txt");
+    EXPECT_FALSE(fs::exists(dir / "bad/case.yaml"));
+  }
+}
+
+TEST(BrashCase, GetPrintsAResolvedValue) {
+  const fs::path dir = temp_dir("get");
+  const std::string bin = (kBin / "brash-case").string();
+  ASSERT_EQ(run(bin + " get " + (kRepo / "cases/jbc_quick").string() + " run.timestep_s", dir / "out.txt"), 0);
+  EXPECT_EQ(slurp(dir / "out.txt"), "0.0008\n");
+  ASSERT_EQ(run(bin + " get " + (kRepo / "cases/jbc_quick/case.yaml").string() + " guards.every_steps", dir / "o2.txt"), 0);
+  EXPECT_EQ(slurp(dir / "o2.txt"), "10\n");
+  EXPECT_EQ(run(bin + " get " + (kRepo / "cases/jbc_quick").string() + " run.timestep", dir / "o3.txt"), 2);
+  EXPECT_NE(slurp(dir / "o3.txt").find("run.timestep"), std::string::npos);
+}
