@@ -11,30 +11,18 @@ and the share of them faster than 5 mm/s (the far field's wake speed; docs/perfo
 paper scene").
 Needs Debian's python3-numpy (hence /usr/bin/python3). Reads RUN_DIR/case.yaml for the channel length, the hull's
 start and the speed, and the case's packing file for the packing positions (piece id = packing row)."""
-import os
-import re
 import sys
 
 import numpy as np
-from run_dumps import every_nth, load, snapshots
+from run_dumps import case_value, every_nth, load, meta, snapshots
 
 run = sys.argv[1]
 every = int(sys.argv[2]) if len(sys.argv) > 2 else 3
-text = open(os.path.join(run, 'case.yaml')).read()
-
-
-def value(section, key):
-    m = re.search(r'^%s:\n(?:  .*\n)*?  %s: *"?([^"\n]+)"?' % (section, key), text, re.M)
-    if not m:
-        sys.exit('%s/case.yaml: no %s.%s' % (run, section, key))
-    return m.group(1)
-
-
-length = float(value('channel', 'length_m'))
-start_x = float(value('hull', 'start_x_m'))
-lpp = float(value('hull', 'lpp_m'))
-speed = float(value('ship', 'speed_m_s'))
-packing_file = value('ice', 'packing_file')
+length = float(case_value(run, 'channel.length_m'))
+start_x = float(case_value(run, 'hull.start_x_m'))
+lpp = float(case_value(run, 'hull.lpp_m'))
+speed = float(case_value(run, 'ship.speed_m_s'))
+packing_file = case_value(run, 'ice.packing_file')
 with open(packing_file) as f:  # '#' comment lines, then the header id,x,y,z,diameter
     rows = [line for line in f if not line.startswith('#')]
 columns = rows[0].strip().split(',')
@@ -42,8 +30,7 @@ packing = np.loadtxt(rows[1:], delimiter=',')
 packing_x = packing[:, columns.index('x')]
 if not (packing[:, columns.index('id')] == np.arange(1, len(packing) + 1)).all():  # dump ids index the rows
     sys.exit('%s: ids are not 1..N in file order' % packing_file)
-meta = open(os.path.join(run, 'meta.json')).read()
-dt = float(re.search(r'"dt_s": *([0-9.eE+-]+)', meta).group(1))
+dt = float(meta(run)['dt_s'])
 dumps = snapshots(run, dt)
 print('| t [s] | bow x [m] | far-end front at x0 [m] | pieces beyond x = %g m | push reaches (ahead of bow) [m] '
       '| bed between: median abs(vz) [mm/s] | faster than 5 mm/s |' % length)

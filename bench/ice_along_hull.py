@@ -13,39 +13,24 @@ Per dump (LIGGGHTS raw dumps while the run goes, the particles_*.csv of any engi
     bottom (LIGGGHTS drag paper run at 40 s: 90 % within 0.9 m of the bow, 6-17 cm deep, the model's draft being
     0.41 m);
   - behind: pieces still deeper than DEPTH behind the stern (within 2 m).
-Needs Debian's python3-numpy (hence /usr/bin/python3). Reads RUN_DIR/case.yaml (channel, hull, ship)."""
-import os
-import re
+Needs Debian's python3-numpy (hence /usr/bin/python3). Reads RUN_DIR/case.yaml (channel, hull, ship) through brash-case get."""
 import sys
 
 import numpy as np
-from run_dumps import every_nth, load, snapshots
+from run_dumps import case_value, every_nth, load, meta, snapshots
 
 DEPTH = 0.05  # [m] below the water level: well below the undisturbed two-layer bed (0.035 m thick)
 
 run = sys.argv[1]
 every = int(sys.argv[2]) if len(sys.argv) > 2 else 2
-text = open(os.path.join(run, 'case.yaml')).read()
-
-
-def value(section, key, default=None):
-    m = re.search(r'^%s:\n(?:  .*\n)*?  %s: *"?([^"\n]+)"?' % (section, key), text, re.M)
-    if not m:
-        if default is not None:
-            return default
-        sys.exit('%s/case.yaml: no %s.%s' % (run, section, key))
-    return m.group(1)
-
-
-length = float(value('channel', 'length_m'))
-width = float(value('channel', 'width_m'))
-water = float(value('water', 'level_m', '0.0'))
-start_x = float(value('hull', 'start_x_m'))
-lpp = float(value('hull', 'lpp_m'))
-beam = float(value('hull', 'beam_m'))
-speed = float(value('ship', 'speed_m_s'))
-meta = open(os.path.join(run, 'meta.json')).read()
-dt = float(re.search(r'"dt_s": *([0-9.eE+-]+)', meta).group(1))
+length = float(case_value(run, 'channel.length_m'))
+width = float(case_value(run, 'channel.width_m'))
+water = float(case_value(run, 'water.level_m'))
+start_x = float(case_value(run, 'hull.start_x_m'))
+lpp = float(case_value(run, 'hull.lpp_m'))
+beam = float(case_value(run, 'hull.beam_m'))
+speed = float(case_value(run, 'ship.speed_m_s'))
+dt = float(meta(run)['dt_s'])
 dumps = snapshots(run, dt)
 
 print('| t [s] | bow x [m] | ahead (1 m) / bed | alongside / bed | under: bow third | middle third | stern third '

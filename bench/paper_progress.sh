@@ -8,6 +8,7 @@
 # window mean), with the number of bins, so that runs are compared over the same window (e.g. one still going).
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
+bin="${BRASH_BIN:-$here/build/bin}"
 bin_s="${1:-0.5}"
 runs="${2:-$here/runs}"
 tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
@@ -24,7 +25,7 @@ for d in "$runs"/paper-*/; do
   d="${d%/}"; name="$(basename "$d")"
   raws=("$d"/hull_force*.raw)
   [ ${#raws[@]} -gt 0 ] || [ -f "$d/hull_force.csv" ] || continue
-  if [ ${#raws[@]} -gt 0 ] && ! grep -q '"status": "complete"' "$d/meta.json" 2>/dev/null; then
+  if [ ${#raws[@]} -gt 0 ] && ! jq -e '.status == "complete"' "$d/meta.json" > /dev/null 2>&1; then
     # parts in attempt order, then the current one; rows keyed by step
     # (printf, not ls: with no part file the glob is empty, and ls would list the working directory)
     parts=("$d"/hull_force.part*.raw)
@@ -51,7 +52,7 @@ done
 hist="$here/docs/paper_runs/paper_histories_40s.dat"
 per=$(awk -v b="$bin_s" 'BEGIN { m = b / 0.5; print (m >= 1 && m == int(m)) ? m : 0 }')
 if [ -f "$hist" ] && [ "$per" -gt 0 ]; then
-  lambda=$(awk '/^ *scale_lambda:/ { print $2; exit }' "$here/cases/jbc_ia_5kn/case.yaml")
+  lambda=$("$bin/brash-case" get "$here/cases/jbc_ia_5kn" ship.scale_lambda)
   while IFS= read -r label; do
     name="${label#\# } (history)"
     # rows of this block: "t_mid kN"; the kN of a 0.5 s bin -> model N, averaged over BIN_S / 0.5 bins

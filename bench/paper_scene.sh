@@ -34,10 +34,7 @@ sed -e '/^fix farfield/d' -e 's/^group idle subtract all all/group idle delete/'
 # the same scene with the case's far field switched on.
 has_ff=0; grep -q '^fix farfield' "$work/in_on.lmp" && has_ff=1
 if [ "$has_ff" = 0 ]; then
-  mkdir -p "$work/ffcase"
-  sed -e 's/^  farfield: false/  farfield: true/' "$run_dir/case.yaml" > "$work/ffcase/case.yaml"
-  grep -q '^  farfield: true' "$work/ffcase/case.yaml" ||
-    { echo "paper_scene: $run_dir/case.yaml has no 'speedups: farfield: false' to switch on" >&2; exit 1; }
+  "$bin/brash-case" derive "$run_dir/case.yaml" --set speedups.farfield=true --out "$work/ffcase" > /dev/null
   "$bin/brash-liggghts-run" "$work/ffcase" --np 2 --out "$work/ffrun" --prepare-only > "$work/ffprepare.log" 2>&1 ||
     { cat "$work/ffprepare.log" >&2; exit 1; }
   strip "$work/ffrun/in.lmp" > "$work/in_ff.lmp"

@@ -25,6 +25,7 @@ bin="${BRASH_BIN:-$here/build/bin}"
 case_src="$(cd "${CASE:-$here/cases/jbc_narrow}" && pwd)"
 sides=("${SIDE_A:-1}" "${SIDE_B:-2}")
 mkdir -p "$out/cases"
+source "$here/bench/case_variant.sh"
 np_of() { echo "${1%%:*}"; }
 edits_of() { [[ "$1" == *:* ]] && echo "${1#*:}" || true; }
 is_ode() { [[ "$(np_of "$1")" == ode* ]]; }
@@ -55,16 +56,16 @@ engines=(brash-liggghts-run); for side in "${sides[@]}"; do is_ode "$side" && en
 for exe in brash-case brash-pack "${engines[@]}" brash-post; do
   [ -x "$bin/$exe" ] || { echo "rank_ensemble: $bin/$exe not found (build first, or set BRASH_BIN)" >&2; exit 2; }
 done
+command -v jq > /dev/null || { echo "rank_ensemble: jq not found (make deps installs it)" >&2; exit 2; }
 seed_case() { echo "$out/cases/$(basename "$case_src")_s$1"; }
-complete() { [ -f "$1/report.json" ] && grep -q '"status": "complete"' "$1/report.json"; }
+complete() { [ -f "$1/report.json" ] && jq -e '.status == "complete"' "$1/report.json" > /dev/null; }
 run_one() {  # seed, side
   local name; name="$(side_name "$2")"
   local run="$out/s$1-$name" case_dir edits
   complete "$run" && return 0
   case_dir="$(seed_case "$1")"; edits="$(edits_of "$2")"
   if [ -n "$edits" ]; then  # the seed's case with the side's edits, on the seed's packing
-    mkdir -p "$case_dir-$name"
-    python3 "$here/bench/case_edit.py" "$case_dir/case.yaml" "$case_dir-$name/case.yaml" "$edits" "$case_dir"
+    case_variant_same_packing "$bin" "$case_dir" "$case_dir-$name" "$edits"
     case_dir="$case_dir-$name"
   fi
   rm -rf "$run"

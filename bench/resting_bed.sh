@@ -15,11 +15,12 @@ out="${1:-$here/runs/resting-bed}"
 bin="${BRASH_BIN:-$here/build/bin}"
 case_src="$(cd "${CASE:-$here/cases/jbc_ia_5kn}" && pwd)"
 length="${LENGTH:-2.0}" duration="${DURATION:-3.0}" jobs="${JOBS:-2}"
-dt="$(awk '/^  timestep_s:/ { print $2; exit }' "$case_src/case.yaml")"
+dt="$("$bin/brash-case" get "$case_src" run.timestep_s)"
 half_dt="$(awk -v d="$dt" 'BEGIN { printf "%.6g", d / 2 }')"
-rho_ice="$(awk '/^  density_kg_m3:/ && ice { print $2; exit } /^ice:/ { ice = 1 } /^[a-z]/ && !/^ice:/ { ice = 0 }' "$case_src/case.yaml")"
+rho_ice="$("$bin/brash-case" get "$case_src" ice.density_kg_m3)"
+# the averaging window inside the shorter run; the shorter channel's own packing (same seed) in the variant's folder
 base="channel.length_m=$length,ship.speed_m_s=1.0e-9,run.duration_s=$duration,run.dump_interval_s=0.25"
-base="$base,ice.packing_file=generated/packing.csv"  # the shorter channel's own packing (same seed)
+base="$base,run.window_s=[0.0,$duration],ice.packing_file=generated/packing.csv"
 variants=(
   "case:"
   "half_dt:run.timestep_s=$half_dt"
@@ -28,13 +29,12 @@ variants=(
   "drag:fluid.model=drag"
 )
 mkdir -p "$out"
+source "$here/bench/case_variant.sh"
 run_variant() {  # name edits
   local dir="$out/$1"
-  [ -f "$dir/run/meta.json" ] && grep -q '"complete"' "$dir/run/meta.json" && return 0
-  rm -rf "$dir"; mkdir -p "$dir/case"
-  python3 "$here/bench/case_edit.py" "$case_src/case.yaml" "$dir/case/case.yaml" "$base${2:+,$2}" "$case_src"
-  # the averaging window must lie inside the shorter run (its value has a comma, so not through case_edit.py)
-  sed -i "s/^  window_s: .*/  window_s: [0.0, $duration]/" "$dir/case/case.yaml"
+  [ -f "$dir/run/meta.json" ] && jq -e '.status == "complete"' "$dir/run/meta.json" > /dev/null && return 0
+  rm -rf "$dir"
+  case_variant "$bin" "$case_src" "$dir/case" "$base${2:+,$2}" || { echo "resting_bed: $1 refused" >&2; return 1; }
   "$bin/brash-liggghts-run" "$dir/case" --np 1 --out "$dir/run" --no-post > "$dir/log.txt" 2>&1 ||
     { echo "resting_bed: $1 failed (see $dir/log.txt)" >&2; return 1; }
 }

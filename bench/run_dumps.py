@@ -2,11 +2,31 @@
 
 A LIGGGHTS run still going has its raw dumps particles/dump.<step>.txt (9 header lines, space separated); a
 finished run (any engine) has particles/particles_<step>.csv (one header line, comma separated). Both have the
-columns id x y z radius vx vy vz first, so the same column numbers select from either."""
+columns id x y z radius vx vy vz first, so the same column numbers select from either.
+The run's case and meta.json are read through the case library (brash-case get: $BRASH_BIN, default build/bin)
+and a JSON reader."""
 import glob
+import json
 import os
+import subprocess
 
 import numpy as np
+
+
+def case_value(run, key):
+    """A dotted key of RUN_DIR/case.yaml as text, as the case loader resolves it (brash-case get)."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    exe = os.path.join(os.environ.get('BRASH_BIN') or os.path.join(here, '..', 'build', 'bin'), 'brash-case')
+    got = subprocess.run([exe, 'get', os.path.join(run, 'case.yaml'), key], capture_output=True, text=True)
+    if got.returncode != 0:
+        raise SystemExit(got.stderr.strip() or '%s: brash-case get %s failed' % (run, key))
+    return got.stdout.strip()
+
+
+def meta(run):
+    """RUN_DIR/meta.json as a dict."""
+    with open(os.path.join(run, 'meta.json')) as f:
+        return json.load(f)
 
 
 def snapshots(run, dt):

@@ -5,8 +5,8 @@
 # DEM runs are chaotic: a difference is only meaningful if it exceeds the combined CI.
 #   bash bench/speed_vs_error.sh [CASE_DIR] [KNOB ...]      (default cases/jbc_bench, every knob)
 #   env: BRASH_BIN (default build-perf/bin or build/bin), NP (2), OUT (runs/bench-<stamp>), TABLE_ONLY=1
-# A knob is NAME:section.key=value[,section.key=value...] applied to a copy of the case; NAME only picks
-# one from the list below. Re-print a finished study with TABLE_ONLY=1 OUT=<dir>.
+# A knob is NAME:section.key=value[,section.key=value...] applied to a copy of the case (brash-case derive); NAME
+# only picks one from the list below. Re-print a finished study with TABLE_ONLY=1 OUT=<dir>.
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 bin="${BRASH_BIN:-}"
@@ -40,12 +40,12 @@ else
   knobs=("${all_knobs[@]}")
 fi
 mkdir -p "$out"
+source "$here/bench/case_variant.sh"
 
-# copy of the case with section.key=value edits (keys replaced in place or added to their section);
-# the packing file is made absolute so every variant uses the reference's packing
+# the case with the knob's section.key=value edits, on the reference's packing
 variant() {  # $1 name, $2 edits
-  local dir="$out/cases/$1"; mkdir -p "$dir"
-  python3 "$here/bench/case_edit.py" "$case_dir/case.yaml" "$dir/case.yaml" "$2" "$case_dir"
+  local dir="$out/cases/$1"
+  case_variant_same_packing "$bin" "$case_dir" "$dir" "$2" || return
   echo "$dir"
 }
 
@@ -55,7 +55,7 @@ if [ -z "${TABLE_ONLY:-}" ]; then
   for k in "${knobs[@]}"; do
     name="${k%%:*}"; edits="${k#*:}"
     [ -f "$out/$name/report.json" ] && { echo "== $name: done already ($out/$name)"; continue; }
-    vdir="$(variant "$name" "$edits")"
+    vdir="$(variant "$name" "$edits")" || { echo "   $name: refused by brash-case derive (message above)"; continue; }
     echo "== $name: ${edits:-all switches off} -> $out/$name"
     rm -rf "$out/$name"
     nice -n 5 "$bin/brash-liggghts-run" "$vdir" --np "$np" --out "$out/$name" > "$out/$name.runner.txt" 2>&1 ||

@@ -20,12 +20,12 @@ export BRASH_YADE_BENCH_STEPS="$steps"
 "$bin/brash-yade-run" "$case_dir" --duration 1 --out "$work/scene" --no-post >/dev/null 2>&1 || true
 grep '^BENCH' "$work/scene/log.txt" || { echo "bench/yade.sh: no result, see the log:" >&2; tail -20 "$work/scene/log.txt" >&2; exit 1; }
 # Against LIGGGHTS on the same case and the same stretch of time (the first N steps), 1 rank.
-dt=$(awk '/timestep_s:/{print $2; exit}' "$work/scene/case.yaml")
+dt=$("$bin/brash-case" get "$work/scene/case.yaml" run.timestep_s)
 dur=$(awk -v n="$steps" -v dt="$dt" 'BEGIN{printf "%.6g", n*dt}')
 if "$bin/brash-liggghts-run" "$case_dir" --np 1 --duration "$dur" --no-post --out "$work/lig" >/dev/null 2>&1; then
-  awk -F'[:,]' '/"particle_steps"/{ps=$2} /"loop_time_s"/{lt=$2} END{
-    printf "BENCH liggghts 1 rank, same case, same %s steps: %.3g particle-steps/s (loop %.2f s)\n", "'"$steps"'", ps/lt, lt}' \
-    "$work/lig/meta.json"
+  read -r ps lt < <(jq -r '"\(.particle_steps) \(.loop_time_s)"' "$work/lig/meta.json")
+  awk -v n="$steps" -v ps="$ps" -v lt="$lt" 'BEGIN {
+    printf "BENCH liggghts 1 rank, same case, same %s steps: %.3g particle-steps/s (loop %.2f s)\n", n, ps / lt, lt }'
 else
   echo "bench/yade.sh: the LIGGGHTS comparison run failed (see $work/lig/log.txt)"
 fi
