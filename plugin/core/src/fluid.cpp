@@ -14,7 +14,7 @@ void apply_to_arrays(const FluidParams& p, std::size_t n, const double* radius_m
     s.position_m = Vec3(x_m[i][0], x_m[i][1], x_m[i][2]);
     s.velocity_m_s = Vec3(v_m_s[i][0], v_m_s[i][1], v_m_s[i][2]);
     const FluidOutput out = evaluate(p, s, state[i], dt_s);
-    for (int k = 0; k < 3; ++k) f_N[i][k] = (f_N[i][k] + out.force_N[k]) * out.scale[k];
+    for (int k = 0; k < 3; ++k) f_N[i][k] = scaled_total_force(f_N[i][k], out.force_N[k], out.scale[k]);
     state[i] = advance(state[i], s.velocity_m_s);
   }
 }

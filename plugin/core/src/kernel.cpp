@@ -116,24 +116,25 @@ void kernel(const FluidParams& p, const KernelArrays& a, double dt_s) {
         const CaRow ca = wetted_ca(t, h, two_r, reversed);
         const double rho_vs = rho_pi3 * h2_3r_minus_h;
         if constexpr (kImplicit) {
-          sx = m / (m + rho_vs * ca.x);
+          sx = implicit_scale(m, added_mass_kg(rho_vs, ca.x));
           if constexpr (kSymXY)
             sy = sx;
           else
-            sy = m / (m + rho_vs * ca.y);
-          sz = m / (m + rho_vs * ca.z);
+            sy = implicit_scale(m, added_mass_kg(rho_vs, ca.y));
+          sz = implicit_scale(m, added_mass_kg(rho_vs, ca.z));
         } else {
-          Fx -= rho_vs * ca.x * ax, Fy -= rho_vs * ca.y * ay, Fz -= rho_vs * ca.z * az;
+          Fx -= added_mass_kg(rho_vs, ca.x) * ax, Fy -= added_mass_kg(rho_vs, ca.y) * ay,
+              Fz -= added_mass_kg(rho_vs, ca.z) * az;
         }
       }
     }
 
     if constexpr (kDrag || !kAddedMass || !kImplicit) {
-      f[0] = (f[0] + Fx) * sx, f[1] = (f[1] + Fy) * sy;
-    } else {  // implicit added mass alone: no horizontal force of ours, only the scale
+      f[0] = scaled_total_force(f[0], Fx, sx), f[1] = scaled_total_force(f[1], Fy, sy);
+    } else {  // implicit added mass alone: no horizontal force of ours, only the scale (no + 0.0 to pay)
       f[0] *= sx, f[1] *= sy;
     }
-    f[2] = (f[2] + Fz) * sz;
+    f[2] = scaled_total_force(f[2], Fz, sz);
     if (!replaying) {
       // Implicit added mass alone never reads the horizontal velocity back (no drag, no lagged acceleration).
       if constexpr (kDrag || !kImplicit) st[0] = vx, st[1] = vy;

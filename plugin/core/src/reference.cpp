@@ -13,7 +13,7 @@ void ReferenceSphere::compute_forces() {
   f_N = external_force_N;
   if (engine_gravity) f_N.z() -= m * params.gravity_m_s2;
   last = evaluate(params, Sphere{radius_m, m, x_m, v_m_s}, state, dt_s);
-  f_N = (f_N + last.force_N).cwiseProduct(last.scale);
+  f_N = total_force(f_N, last);
   state = advance(state, v_m_s);
 }
 

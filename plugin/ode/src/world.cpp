@@ -269,19 +269,11 @@ void World::apply_fluid() {
     const Vec3 x(p[0], p[1], p[2]), vel(v[0], v[1], v[2]);
     if (!hull_flow_.empty()) params.flow_velocity_m_s = hull_flow_.at(x - flow_frame);
     s.last = core::evaluate(params, core::Sphere{s.radius_m, s.mass_kg, x, vel}, s.state, stepper_.dt_s);
-    Vec3 f = s.last.force_N;
-    f.z() -= s.mass_kg * g;
-    double M = s.mass_kg;
-    if (fluid_.has_added_mass() && fluid_.treatment == core::Treatment::Implicit) {
-      if (mode_ == ImplicitMode::EffectiveMass) {
-        const double ma_h = fluid_.water_density_kg_m3 * s.last.immersion.volume_m3 * 0.5 *
-                            (s.last.ca.x() + s.last.ca.y());
-        M = s.mass_kg + ma_h;
-        f = f.cwiseProduct(s.last.scale) * (M / s.mass_kg);
-      } else {
-        f = f.cwiseProduct(s.last.scale);
-      }
-    }
+    const Vec3 gravity(0.0, 0.0, -s.mass_kg * g);
+    const bool effective_mass = mode_ == ImplicitMode::EffectiveMass && core::implicit_added_mass(fluid_);
+    const double M =
+        effective_mass ? core::isotropic_body_mass_kg(s.mass_kg, s.last.added_mass_kg) : s.mass_kg;
+    const Vec3 f = core::force_for_body_mass(core::total_force(gravity, s.last), s.mass_kg, M);
     set_ode_mass(s, M);
     dBodyAddForce(s.body, f.x(), f.y(), f.z());
     s.state = core::advance(s.state, vel);

@@ -117,7 +117,7 @@ class Fluid {
         const Vec3 vi(v[i][0], v[i][1], v[i][2]);
         const FluidOutput fo = evaluate(p_, Sphere{r[i], m[i], Vec3(x[i][0], x[i][1], x[i][2]), vi}, state_[i], dt);
         for (int k = 0; k < 3; ++k) {
-          o[i][k] = (f[i][k] + fo.force_N[k]) * fo.scale[k] - f[i][k];
+          o[i][k] = scaled_total_force(f[i][k], fo.force_N[k], fo.scale[k]) - f[i][k];
           ca[i][k] = fo.ca[k];
         }
         fr[i] = fo.immersion.fraction;

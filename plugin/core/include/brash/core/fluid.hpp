@@ -3,15 +3,16 @@
 // per step, after every other force on the sphere is known:
 //
 //   out = evaluate(params, sphere, state, dt);
-//   f_total = (f_other + out.force_N).cwiseProduct(out.scale);   // scale = 1 unless implicit added mass
+//   f_total = total_force(f_other, out);   // (f_other + out.force_N) scaled; scale = 1 unless implicit
 //   state = advance(state, sphere.velocity);
 //
 // Implicit treatment solves (m + m_a) a = F per axis, i.e. scales the force the integrator divides by m
-// with m / (m + m_a); explicit adds F_a = -rho Ca V_s a with the lagged a = (v - v_prev) / dt.
+// with m / (m + m_a) (added_mass.hpp); explicit adds F_a = -m_a a with the lagged a = (v - v_prev) / dt.
 #pragma once
 #include <cmath>
 #include <cstddef>
 
+#include "brash/core/added_mass.hpp"
 #include "brash/core/immersion.hpp"
 #include "brash/core/params.hpp"
 
@@ -34,6 +35,7 @@ struct FluidOutput {
   Vec3 force_N = Vec3::Zero();   // buoyancy + drag + explicit added mass (+ gravity if apply_gravity)
   Vec3 scale = Vec3::Ones();     // implicit added mass: m / (m + m_a) per axis
   Vec3 ca = Vec3::Zero();        // added-mass coefficients used this step
+  Vec3 added_mass_kg = Vec3::Zero();  // m_a = Ca rho_w V_s per axis (with added mass)
   Immersion immersion;
   bool reversed = false;
 };
@@ -89,18 +91,23 @@ inline FluidOutput evaluate(const FluidParams& p, const Sphere& s, const FluidSt
   if (p.has_added_mass()) {
     out.reversed = motion_reversed(st, s.velocity_m_s);
     out.ca = select_ca(p.ca, s.radius_m, out.immersion, out.reversed);
-    const Vec3 added_mass_kg = p.water_density_kg_m3 * out.immersion.volume_m3 * out.ca;
+    out.added_mass_kg = added_mass_kg(p.water_density_kg_m3 * out.immersion.volume_m3, out.ca);
     if (p.treatment == Treatment::Implicit) {
-      out.scale = Vec3::Constant(s.mass_kg).cwiseQuotient(added_mass_kg + Vec3::Constant(s.mass_kg));
+      out.scale = implicit_scale(s.mass_kg, out.added_mass_kg);
     } else if (st.has_prev && dt_s > 0.0) {
       const Vec3 accel = (s.velocity_m_s - st.velocity_prev_m_s) / dt_s;
-      out.force_N -= added_mass_kg.cwiseProduct(accel);
+      out.force_N -= out.added_mass_kg.cwiseProduct(accel);
     }
   }
   return out;
 }
 
 inline FluidState advance(const FluidState&, const Vec3& velocity_m_s) { return {velocity_m_s, true}; }
+
+// The total force for an integrator that divides by m: every other force plus the fluid's, scaled.
+inline Vec3 total_force(const Vec3& other_N, const FluidOutput& out) {
+  return scaled_total_force(other_N, out.force_N, out.scale);
+}
 
 // Array form for engines that keep particles in flat arrays (LIGGGHTS): x, v, f are n x 3 row-major.
 // f holds every other force on entry and the total on exit; state is updated in place.

@@ -5,7 +5,8 @@
 //   1. fluid: for every awake, uncull'd sphere: out = core::evaluate(params, {r, m, x(n), v(n)}, state, dt)
 //      (with a hull flow table, params' flow velocity is the table's at x(n) in the hull's frame);
 //      the applied force is G = (-m g e_z + out.force_N) (.) out.scale (.) (M / m) and the body mass is M
-//      (see "Implicit added mass in ODE" below); state = advance(state, v(n)).
+//      (see "Implicit added mass in ODE" below; composed by brash/core/added_mass.hpp);
+//      state = advance(state, v(n)).
 //   2. collide: broad phase (our x-y grid, or ODE's sweep-and-prune), contact joints (dContactApprox1,
 //      Coulomb mu per pair type, sphere body first).
 //   3. dWorldQuickStep (semi-implicit Euler: v(n+1) = v(n) + dt (G + F_contact) / M,
@@ -16,7 +17,8 @@
 // Implicit added mass in ODE (the "treatment" of physics.md). The core asks for (m + m_a,i) a_i = F_i per
 // axis, F = every force on the sphere. ODE only knows the contact forces inside its solver, and its
 // translational mass is isotropic. We give the body the isotropic mass M = m + m_a,h (m_a,h = rho_w V_s (Ca_x
-// + Ca_y)/2, the horizontal added mass, updated every step) and apply G_i = F_ext,i * M / (m + m_a,i). Then
+// + Ca_y)/2, the horizontal added mass, updated every step: core::isotropic_body_mass_kg) and apply
+// G_i = F_ext,i * M / (m + m_a,i) (core::force_for_body_mass). Then
 //   - external forces (gravity, buoyancy, drag) get exactly a_i = F_ext,i / (m + m_a,i) on every axis;
 //   - contact forces get exactly 1/(m + m_a) on x and y (Table 1: Ca_x = Ca_y), and 1/M instead of
 //     1/(m + m_a,z) on z (the solver sees the heavier horizontal inertia; Table 1 has Ca_z <= Ca_x except in
