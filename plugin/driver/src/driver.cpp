@@ -187,7 +187,7 @@ int drive(Engine& engine, const DriverOptions& o) {
     std::cerr << fmt::format("{} done in {:.1f} s ({:.3g} particle-steps/s)\n", tag, record->attempt_wall_s(),
                              attempt.particle_steps / std::max(1e-9, record->attempt_wall_s()));
   } catch (const std::exception& e) {
-    std::cerr << "brash-" << engine.name() << ": error: " << e.what() << "\n";
+    std::cerr << engine.runner() << ": error: " << e.what() << "\n";
     if (record) {
       record->meta()["status"] = "failed";
       record->meta()["reason"] = e.what();

@@ -1,0 +1,182 @@
+#include "yade_engine.hpp"
+
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <fmt/format.h>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <sys/wait.h>
+
+#include "brash/error.hpp"
+#include "brash/guard.hpp"
+#include "brash/run_layout.hpp"
+#include "brash/runner_setup.hpp"
+
+namespace fs = std::filesystem;
+
+namespace brash::yade {
+namespace {
+
+// Where the scene script and the module are: next to the build by default, overridable.
+fs::path env_or(const char* var, const char* fallback) {
+  const char* v = std::getenv(var);
+  return v && *v ? fs::path(v) : fs::path(fallback);
+}
+
+std::string yade_command(const fs::path& run_dir, int threads) {
+  const fs::path home = std::getenv("HOME") && *std::getenv("HOME") ? fs::path(std::getenv("HOME")) : run_dir / "home";
+  fs::create_directories(home);
+  // exec: the shell's pid becomes YADE's, so that a stop can signal it
+  return fmt::format(
+      "cd {} && echo $$ > engine.pid && HOME={} PYTHONPATH={}${{PYTHONPATH:+:$PYTHONPATH}} OMP_NUM_THREADS={} exec {} "
+      "-n -j{} -x {} scene.json 2>&1",
+      run::shell_quote(run_dir), run::shell_quote(home), run::shell_quote(env_or("BRASH_YADE_PYDIR", BRASH_YADE_PYDIR)),
+      threads, run::shell_quote(env_or("BRASH_YADE_EXE", BRASH_YADE_EXE)), threads,
+      run::shell_quote(env_or("BRASH_YADE_SCRIPT", BRASH_YADE_SCRIPT)));
+}
+
+long read_pid(const fs::path& file) {
+  std::ifstream in(file);
+  long pid = 0;
+  return in >> pid && pid > 0 ? pid : 0;
+}
+
+}  // namespace
+
+nlohmann::json YadeEngine::meta() const {
+  return {{"engine_version", "YADE 2023.02a (Debian yade) + brash_yade PyRunner adapter"},
+          {"ranks", 1},
+          {"threads", threads_}};
+}
+
+void YadeEngine::load(const Case& c, const fs::path& /*case_file*/, const std::vector<Sphere>& spheres) {
+  if (c.fluid.hull_flow != HullFlow::None)
+    throw InputError(fmt::format("fluid.hull_flow: {} is implemented on LIGGGHTS and ODE (brash-liggghts-run, "
+                                 "brash-ode); brash-yade-run runs in still water (hull_flow: none)",
+                                 to_string(c.fluid.hull_flow)));
+  case_ = c;
+  particles_ = spheres.size();
+  full_mesh_ = hull::read_mesh(c.hull.file);
+  hull::require_plausible_units(full_mesh_, c.hull.file, c.hull.draft_m, c.hull.lpp_m);
+  full_ = hull::check_mesh(full_mesh_);  // extents and closedness of the full hull
+  full_closed_ = full_.closed;
+  contact_mesh_ = full_mesh_;
+  if (c.hull.band_m)
+    contact_mesh_ = hull::clip_band(contact_mesh_, c.hull.draft_m - (*c.hull.band_m)[0], c.hull.draft_m + (*c.hull.band_m)[1]);
+}
+
+// Run-time guards (brash::guard, docs/stability.md): the LIGGGHTS scene box of the same case (extents of the full
+// hull) and the hull penetration check on the full closed hull, also when the contact hull is a band.
+nlohmann::json YadeEngine::guards_json(const fs::path& run_dir) const {
+  const auto limits = guard::limits_for_case(
+      case_, guard::domain_box(case_, full_.min_m.x(), full_.max_m.x(), full_.min_m.z(), full_.max_m.z(),
+                               case_.run.duration_s));
+  std::string guard_hull;
+  if (limits.max_hull_penetration_d && full_closed_) {
+    guard_hull = case_.hull.band_m ? "hull_full.stl" : "hull.stl";
+    if (case_.hull.band_m) hull::write_stl(run_dir / guard_hull, full_mesh_);
+  } else if (!full_closed_) {
+    std::cerr << "[brash-yade] note: " << case_.hull.file.string()
+              << " is not a closed surface: the hull penetration guard is off\n";
+  }
+  return {{"every_steps", case_.guards.every_steps},
+          {"box", *limits.box},
+          {"z_max_m", *limits.z_max_m},
+          {"ke_max_J", *limits.ke_max_J},
+          {"max_hull_penetration_d",
+           guard_hull.empty() ? nlohmann::json(nullptr) : nlohmann::json(*limits.max_hull_penetration_d)},
+          {"hull_stl", guard_hull.empty() ? std::string() : fs::absolute(run_dir / guard_hull).string()},
+          {"hull_origin_m", {case_.hull.start_x_m, 0.0, -case_.hull.draft_m}},
+          {"hull_velocity_m_s", {case_.ship.speed_m_s, 0.0, 0.0}},
+          {"max_dt_fraction", kMaxTimestepOverRayleigh}};
+}
+
+void YadeEngine::write_scene(const fs::path& run_dir, bool /*resume: never, no restarts*/) {
+  const Case& c = case_;
+  hull::write_stl(run_dir / "hull.stl", contact_mesh_);
+  const nlohmann::json scene = {
+      {"case", c.name},
+      {"packing_file", c.ice.packing_file.string()},
+      {"ice_density_kg_m3", c.ice.density_kg_m3},
+      {"hull_stl", fs::absolute(run_dir / "hull.stl").string()},
+      {"draft_m", c.hull.draft_m},
+      {"hull_start_x_m", c.hull.start_x_m},
+      {"speed_m_s", c.ship.speed_m_s},
+      {"channel_width_m", c.channel.width_m},
+      {"channel_length_m", c.channel.length_m},
+      {"friction", {{"ice_ice", c.friction.ice_ice}, {"ice_hull", c.friction.ice_hull}, {"ice_wall", c.friction.ice_wall}}},
+      {"youngs_modulus_pa", c.contact.youngs_modulus_pa},
+      {"poisson_ratio", c.contact.poisson_ratio},
+      {"restitution", c.contact.restitution},
+      {"dt_s", c.run.timestep_s},
+      {"duration_s", c.run.duration_s},
+      {"output_interval_s", c.run.output_interval_s},
+      {"dump_interval_s", c.run.dump_interval_s},
+      {"guards", guards_json(run_dir)}};
+  run::write_atomic(run_dir / "scene.json", scene.dump(1) + "\n");
+}
+
+// The scene writes hull_force.csv.part as it goes and renames it hull_force.csv at its end.
+std::vector<run::ForceRow> YadeEngine::force_record(const fs::path& run_dir, double t_max_s) const {
+  const fs::path done = run_dir / "hull_force.csv", part = run_dir / "hull_force.csv.part";
+  std::ifstream in(fs::exists(part) ? part : done);
+  std::vector<run::ForceRow> rows;
+  std::string line;
+  std::getline(in, line);  // header
+  while (std::getline(in, line)) {
+    run::ForceRow r;
+    if (std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf", &r.t_s, &r.fx_N, &r.fy_N, &r.fz_N) != 4) continue;  // a cut line
+    if (r.t_s <= t_max_s) rows.push_back(r);
+  }
+  return rows;
+}
+
+// Runs YADE, mirrors its output to log.txt, its "[brash-yade] t = T / D s ..." lines to the monitor and its other
+// "[brash-yade]" lines to the terminal; the summary it writes at its end completes meta.json.
+run::Attempt YadeEngine::advance(const fs::path& run_dir, const std::string& /*restart*/, run::Monitor& monitor) {
+  std::ofstream log(run_dir / "log.txt");
+  const std::string cmd = yade_command(run_dir, threads_);
+  FILE* pipe = ::popen(cmd.c_str(), "r");
+  if (!pipe) throw std::runtime_error("cannot start " + cmd);
+  run::Attempt a;
+  long pid = 0;
+  bool stop_sent = false;
+  char buf[8192];
+  while (std::fgets(buf, sizeof buf, pipe)) {
+    const std::string line = buf;
+    log << line << std::flush;
+    if (pid == 0 && (pid = read_pid(run_dir / "engine.pid")) > 0) monitor.engine_process(pid);
+    double t, duration;
+    long step;
+    if (std::sscanf(line.c_str(), "[brash-yade] t = %lf / %lf s step %ld", &t, &duration, &step) == 3) {
+      a.started = true;
+      a.t_last_s = t;
+      if (a.t_first_s < 0) a.t_first_s = t;
+      a.particle_steps = double(particles_) * double(step);
+      if (monitor.progress(t, a.particle_steps) && !stop_sent && pid > 0) {
+        stop_sent = true;
+        ::kill(static_cast<pid_t>(pid), SIGTERM);
+      }
+    } else if (line.rfind("[brash-yade] ERROR", 0) == 0 && a.error.empty()) {
+      a.error = line.substr(20, line.find('\n') - 20);  // after "[brash-yade] ERROR: "
+    } else if (line.rfind("[brash-yade]", 0) == 0) {
+      std::fputs(line.c_str(), stderr);
+    }
+  }
+  const int rc = ::pclose(pipe);
+  monitor.engine_process(0);
+  const int exit_code = WIFEXITED(rc) ? WEXITSTATUS(rc) : 128;
+  const fs::path summary_file = run_dir / "yade_summary.json";
+  if (fs::exists(summary_file)) {
+    const auto summary = nlohmann::json::parse(std::ifstream(summary_file));
+    a.particle_steps = summary.at("particle_steps");
+    for (const char* key : {"loop_time_s", "fluid_us_per_particle_step", "hull_facets"}) a.meta[key] = summary.at(key);
+  }
+  if (a.error.empty() && (exit_code != 0 || !fs::exists(summary_file)))
+    a.error = fmt::format("yade exited with code {}", exit_code);
+  return a;
+}
+
+}  // namespace brash::yade
