@@ -1,0 +1,53 @@
+// How far each completed paper-case run is from the paper's number, beside every candidate change the study
+// measured (section (c)'s groups and the paired ensembles): a candidate can close the gap only with the gap's
+// sign and size (sections.hpp).
+#include <fmt/format.h>
+
+#include <brash/post/study_report/analysis.hpp>
+#include <brash/post/study_report/format.hpp>
+#include <brash/post/study_report/sections.hpp>
+
+namespace brash::post::study_report {
+namespace {
+
+std::string candidate_rows(const Study& s) {
+  std::string md;
+  for (const auto& c : candidate_changes(s))
+    md += fmt::format("| {}: {} | {}, {}, {} | {:+.1f} % ± {:.1f} %{} | {} vs {} |\n", c.param,
+                      md_escape(c.row->value), c.row->base_case, c.run->engine, c.run->model, 100.0 * c.rel,
+                      100.0 * c.ci, c.resolved() ? "" : " (not resolved)", c.run->ref, c.baseline->ref);
+  for (const Paired& p : s.paired) {
+    if (!p.ok) continue;
+    md += fmt::format("| {}: {} | {}, {} paired packings, {} | {:+.1f} % ± {:.1f} %{} | {} |\n", p.row.param,
+                      md_escape(p.row.value), p.case_name, p.pairs,
+                      md_escape(p.row.label.empty() ? side_model(p.side_b) : p.row.label), 100.0 * p.diff_rel,
+                      100.0 * p.ci95_rel, p.resolved() ? "" : " (not resolved)", p.ref);
+  }
+  return md.empty() ? "| — | — | no completed sensitivity run with a baseline | — |\n" : md;
+}
+
+}  // namespace
+
+std::string section_gap(const Study& s) {
+  std::string gaps;
+  for (const auto& g : gaps_to_paper(s))
+    gaps += fmt::format(
+        "- {} ({} {}): {} kN; the paper's {:.0f} kN is **{:+.1f} %** on it (± {:.1f} % from our "
+        "CI95 alone)\n",
+        g.run->ref, g.run->engine, g.run->model, pm(g.run->full_kN, g.run->full_ci_kN, 1), g.paper_kN, g.gap_pct,
+        g.ci_pct);
+  if (gaps.empty()) return "";  // nothing to explain yet
+  return "### The gap to the paper, and the candidates the study measured\n\n" + gaps +
+         "\nEach candidate below is a change of one input, measured on a reduced case (or on the paper case "
+         "itself, group paper_candidates) against its baseline (section (c); one run per value, so a change "
+         "inside its CI is not resolved; rows P1, P2, ... are paired-seed ensembles, which resolve a few per "
+         "cent; jbc_bench's window is the bow's first second in the ice, too short for the fluid models' "
+         "difference to build up, jbc_quick's is 2-4 s). A candidate can close the gap only if its change has "
+         "the gap's sign and a similar size; the set-up table above says which inputs the paper does not "
+         "state.\n\n"
+         "| candidate (parameter: value) | case, engine, fluid model | change vs baseline ± CI95 | runs |\n"
+         "|---|---|---|---|\n" +
+         candidate_rows(s) + "\n";
+}
+
+}  // namespace brash::post::study_report

@@ -1,0 +1,152 @@
+// The paper case's set-up as each of its runs used it (the run folder's case.yaml and meta.json), beside the
+// paper's own set-up (section 3 and Table 1 of the paper; "not stated" where it gives none), with why we
+// differ and where that choice is measured (sections.hpp). Started runs count too: the set-up is known before
+// the result.
+#include <functional>
+
+#include <fmt/format.h>
+
+#include <brash/post/study_report/analysis.hpp>
+#include <brash/post/study_report/format.hpp>
+#include <brash/post/study_report/sections.hpp>
+
+using nlohmann::json;
+
+namespace brash::post::study_report {
+namespace {
+
+struct Column {  // one started paper-case run
+  std::string head;
+  const brash::Case* c = nullptr;
+  const json* meta = nullptr;
+  bool ode() const { return meta->value("engine", std::string()) == "ode"; }
+  json ode_options() const { return meta->value("ode_options", json::object()); }
+};
+
+std::string our_contacts(const Column& col) {
+  if (col.ode()) {
+    const json o = col.ode_options();
+    return fmt::format("ODE rigid, contact joints (ERP {}, CFM {}, {} iterations)", o.value("erp", NAN),
+                       o.value("cfm", NAN), o.value("iterations", 0));
+  }
+  const auto& contact = col.c->contact;
+  return fmt::format("Hertz-Mindlin, E = {:.4g} Pa, ν = {}, e = {}", contact.youngs_modulus_pa, contact.poisson_ratio,
+                     contact.restitution);
+}
+
+std::string our_time_step(const Column& col) {
+  const json dt = col.meta->value("dt_s", json());
+  return dt.is_number() ? fmt::format("{:g} s", dt.get<double>()) : fmt::format("{:g} s (case)", col.c->run.timestep_s);
+}
+
+std::string our_ice(const Column& col) {
+  const json n = col.meta->value("particles", json());
+  const auto& ice = col.c->ice;
+  return fmt::format("{} spheres, d = {:g} m ± {:g} m (cut at ± {:g} sd), porosity {:g}, packing {}",
+                     n.is_number() ? fmt::format("{}", n.get<long long>()) : std::string("?"), ice.diameter_mean_m,
+                     ice.diameter_sd_m, ice.diameter_truncation_sd, ice.porosity, brash::to_string(ice.packing_mode));
+}
+
+std::string our_far_field(const Column& col) {
+  if (col.ode()) return col.ode_options().value("cull", false) ? "culled (window alone: biased high)" : "every piece integrated";
+  if (!col.c->speedups.farfield) return "every piece integrated";
+  return col.c->speedups.farfield_wake_force_weight > 0 ? "far field with the wake rule"
+                                                         : "far field, window alone (biased high)";
+}
+
+std::string our_channel(const Column& col) {
+  const bool walls = col.ode() && col.ode_options().value("end_walls", false);
+  return fmt::format("{:g} x {:g} m, side walls, ends {}", col.c->channel.length_m, col.c->channel.width_m,
+                     walls ? "walled (x = 0 and x = length)" : "open");
+}
+
+struct Item {  // one row of the table
+  std::string name, paper, why;
+  std::function<std::string(const Column&)> ours;
+};
+
+std::vector<Item> items();
+
+std::string setup_table(const std::vector<Column>& cols) {
+  std::string md =
+      "### Our paper-case set-up vs the paper's (from each run's case.yaml and meta.json)\n\n| item | paper |";
+  for (const auto& c : cols) md += " " + c.head + " |";
+  md += " why we differ, and where it is measured |\n|---|---|";
+  for (std::size_t i = 0; i < cols.size(); ++i) md += "---|";
+  md += "---|\n";
+  for (const auto& it : items()) {
+    md += fmt::format("| {} | {} |", it.name, it.paper);
+    for (const auto& c : cols) md += " " + md_escape(it.ours(c)) + " |";
+    md += " " + it.why + " |\n";
+  }
+  return md + "\n";
+}
+
+}  // namespace
+
+std::string section_setup(const Study& s) {
+  std::string md;
+  std::vector<Column> cols;
+  for (const Run* r : started_paper_case_runs(s)) {
+    if (!r->resolved_case) {
+      md += fmt::format("(set-up of {} not readable: {})\n\n", r->ref, r->case_error);
+      continue;
+    }
+    cols.push_back({fmt::format("{} ({} {})", r->ref, r->meta.value("engine", std::string("?")),
+                                r->meta.value("fluid_model", std::string("?"))),
+                    &*r->resolved_case, &r->meta});
+  }
+  return cols.empty() ? md : md + setup_table(cols);
+}
+
+namespace {
+
+std::vector<Item> items() {
+  return {
+      {"engine, contacts", "ODE: rigid spheres, contact joints",
+       "LIGGGHTS is soft-sphere DEM: E is a numerical stiffness (sea ice has ~GPa); E / 16 with an 8x longer "
+       "step measured −0.50 % ± 0.86 % against 5 MPa (paired ensembles, docs/performance.md \"Softer contacts\"). "
+       "brash-ode is the paper's method",
+       our_contacts},
+      {"time step", "not stated",
+       "LIGGGHTS: 18 % of the Rayleigh time of the smallest sphere; ODE: dt checked in docs/ode.md", our_time_step},
+      {"ice pieces", "> 420,000 spheres, d = 0.017578 m normally distributed, two layers, porosity 0.28",
+       "the paper gives no spread of d (5 % here); the porosity is kept as ice volume per channel area and "
+       "the bed takes its natural thickness (docs/physics.md)",
+       our_ice},
+      {"friction ice-ice / ice-hull", "1.35 / 0.1", "the paper's values",
+       [](const Column& c) { return fmt::format("{:g} / {:g}", c.c->friction.ice_ice, c.c->friction.ice_hull); }},
+      {"added mass", "Table 1 (Ca by situation; the text also names Ca = 2)",
+       "Table 1 vs the text's Ca = 2 vs Ca = 0: section (c), parameter fluid.ca_table",
+       [](const Column& c) {
+         return fmt::format("{}, {}", brash::to_string(c.c->fluid.ca_table), brash::to_string(c.c->fluid.treatment));
+       }},
+      {"fluid model",
+       "added mass: \"an added mass model is implemented into the existing fluid force model\" "
+       "(Eq. 1 drag); drag: Eq. 1 alone",
+       "the paper's words allow Eq. 2 replacing Eq. 1 (our added_mass, docs/physics.md) or Eq. 2 added to it "
+       "(our both); section (a)'s \"added mass vs drag\" table gives each against drag, the paper's +4 % is "
+       "what both gives: docs/paper_gap.md, section (c) parameter fluid.model",
+       [](const Column& c) { return std::string(brash::to_string(c.c->fluid.model)); }},
+      {"drag (Eq. 1)", "C_D not stated",
+       "sphere drag coefficient (docs/physics.md); with drag in, C_D sets the level: "
+       "docs/paper_gap.md, section (c) parameter fluid.drag_coefficient",
+       [](const Column& c) {
+         return fmt::format("C_D = {:g}, {}", c.c->fluid.drag_coefficient, brash::to_string(c.c->fluid.drag_law));
+       }},
+      {"idle far-field ice", "not stated",
+       "a frozen far field is biased +8 to +20 % (docs/performance.md \"The far field's error\")", our_far_field},
+      {"channel ends", "21.0 x 2.25 m; what bounds the ends is not stated",
+       "open ends let the floating bed relax into open water, and late in a run that relaxation meets the "
+       "bow's push (bench/channel_end_spread.py on each paper run, docs/paper_gap.md); an end wall would be "
+       "the frozen wall the far-field ensembles measured (docs/performance.md)",
+       our_channel},
+      {"FSICR R_CH hull parameters", "not given (R_CH = 999 kN)",
+       "measured on our STL: docs/fsicr_vs_paper.md explains the difference to 999 kN",
+       [](const Column&) { return std::string("measured on the STL (table above)"); }},
+  };
+}
+
+}  // namespace
+
+}  // namespace brash::post::study_report
