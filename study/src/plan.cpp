@@ -9,14 +9,14 @@ namespace fs = std::filesystem;
 
 namespace brash::study {
 
-namespace {
-
 std::string without_repo(std::string text, const Settings& s) {
   const std::string prefix = (s.repo / "").string();
   for (std::size_t at = text.find(prefix); at != std::string::npos; at = text.find(prefix, at))
     text.erase(at, prefix.size());
   return text;
 }
+
+namespace {
 
 std::string quoted_if_needed(const std::string& word) {
   if (!word.empty() && word.find_first_of(" \t\"'[]{}*?$;&|<>()") == std::string::npos) return word;

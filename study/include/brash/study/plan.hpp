@@ -38,6 +38,8 @@ struct Command {
 // The command as a shell line for the manifest: "nice -n 5 build/bin/brash-liggghts-run ...", the repository's
 // folder dropped from paths, a word with a space, quote or bracket in double quotes.
 std::string shell_text(const Command& c, const Settings& s);
+// `text` with the repository's folder dropped from the paths in it.
+std::string without_repo(std::string text, const Settings& s);
 // Several commands joined by " && ".
 std::string shell_text(const std::vector<Command>& cs, const Settings& s);
 
