@@ -39,11 +39,12 @@ run: build
 bench: build
 	./scripts/brash-bench
 
-# The study of issue 11 -> docs/study.md (STUDY=full: paper case + sweeps, days; short: sweeps on
-# jbc_bench, ~1 h; smoke: 3 tiny runs). STUDY_DOC / STUDY_WORK redirect the document and the work dir.
+# The study of issue 11 -> docs/study.md, run by brash-study from the study file study/$(STUDY).yaml (full: paper
+# case + sweeps, days; short: sweeps on jbc_bench, ~1 h; smoke: 3 tiny runs). STUDY_DOC / STUDY_WORK redirect the
+# document and the work dir; STUDY_PAPER=1, STUDY_ENSEMBLES=1, STUDY_YADE=1 add the paper runs, the ensembles, YADE.
 STUDY ?= full
 study: build
-	STUDY=$(STUDY) ./scripts/brash-study
+	$(BUILD_DIR)/bin/brash-study --study study/$(STUDY).yaml
 
 clean:
 	rm -rf $(BUILD_DIR)

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# scripts/brash-study STUDY=smoke end to end into a temp dir (docs/study.md and docs/paper_runs are not touched),
+# brash-study on study/smoke.yaml end to end into a temp dir (docs/study.md and docs/paper_runs are not touched),
 # then the archives: the study's runs copied beside the document, a complete run in the paper dir archived, each
 # listed from its copy (also once its run directory is gone).
 #   bash study_smoke.sh REPO BIN_DIR TMP_DIR
@@ -10,8 +10,8 @@ rm -rf "$tmp" && mkdir -p "$tmp/paper" "$tmp/elsewhere/deeper/work"
 # relative to it must still name the copies beside the document
 ln -s "$tmp/elsewhere/deeper/work" "$tmp/work"
 study() {
-  STUDY=smoke BRASH_BIN="$bin" STUDY_WORK="$tmp/work" STUDY_DOC="$tmp/study.md" STUDY_PAPER_DIR="$tmp/paper" \
-    STUDY_ARCHIVE="$tmp/archive" "$repo/scripts/brash-study"
+  "$bin/brash-study" --study "$repo/study/smoke.yaml" --repo "$repo" --bin "$bin" --work "$tmp/work" \
+    --out "$tmp/study.md" --paper-dir "$tmp/paper" --archive "$tmp/archive"
 }
 expect() {  # expect TEXT...: every TEXT is in the document
   local t

@@ -139,7 +139,7 @@ TEST(Plan, SpeedSweepRunsTheBenchScriptIntoTheWorkRuns) {
   EXPECT_EQ(p.sweep[0].env.at(1), (std::pair<std::string, std::string>{"MODELS", "both drag"}));
 }
 
-// The committed smoke study: the three runs of scripts/brash-study's STUDY=smoke, in its order, on LIGGGHTS.
+// The committed smoke study: its three jbc_bench runs, in order, on LIGGGHTS.
 TEST(Plan, SmokeStudyPlansItsThreeRuns) {
   const Plan p = plan_study(load_study(std::string(BRASH_SOURCE_DIR) + "/study/smoke.yaml"), settings());
   ASSERT_EQ(p.runs.size(), 3u);
