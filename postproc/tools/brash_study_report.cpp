@@ -1,7 +1,8 @@
 // brash-study-report: the study document (docs/study.md) generated from a study manifest and the
 // report.json of every run it lists (issue 11). Nothing in the document is typed by hand: every number
 // comes from a report.json and every run is listed with the command that produced it. The manifest's format
-// is described in brash/post/study_report/study.hpp; the document is made by the library brash_study_report.
+// is described in brash/post/study_report/study.hpp; the document is made by the library brash_study_report,
+// its prose read from a text template (--template; postproc/study_report/templates/study.md.tmpl).
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -43,8 +44,12 @@ int main(int argc, char** argv) {
   std::string paper_case = "cases/jbc_ia_5kn/case.yaml";
   app.add_option("--paper-case", paper_case, "the paper case, whose published values (its references) the "
                  "document compares with")->capture_default_str();
+  std::string text_template = BRASH_STUDY_REPORT_TEMPLATE;
+  app.add_option("--template", text_template, "the document's prose: named text blocks with {{placeholders}}")
+      ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   try {
+    const auto text = report::TextTemplate::load(text_template);
     const report::Study study = report::load_study(manifest, paper_case);
     const fs::path out_p = out;
     if (out_p.has_parent_path()) fs::create_directories(out_p.parent_path());
@@ -57,7 +62,7 @@ int main(int argc, char** argv) {
       options.speed_plot = plot.empty() ? out_p.parent_path() / (out_p.stem().string() + "_speed.png") : fs::path(plot);
     if (figures != "none")
       options.figure_dir = figures.empty() ? out_p.parent_path() / (out_p.stem().string() + "_figs") : fs::path(figures);
-    write_atomically(out_p, report::render_document(study, options));
+    write_atomically(out_p, report::render_document(study, text, options));
     const auto summary = report::summary_json(study);
     if (!summary_path.empty()) std::ofstream(summary_path) << summary.dump(2) << "\n";
     fmt::print("brash-study-report: {} ({} run(s), {} failed or missing, {} in progress)\n", out_p.string(),

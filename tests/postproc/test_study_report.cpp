@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -670,5 +671,99 @@ TEST(StudyReport, StatusNamesDriftGapsAndEarlyStop) {
   EXPECT_NE(read(d / "study.md").find("RECORD HAS GAPS in the window (no force record 21.90-32.50 s)"),
             std::string::npos)
       << read(d / "study.md");
+  fs::remove_all(d);
+}
+
+// The document's prose comes from the text template (--template, default the source tree's
+// postproc/study_report/templates/study.md.tmpl): a block's wrapped lines become one paragraph, its
+// {{placeholders}} are filled with the tool's numbers, and an edited block shows up in the document.
+namespace {
+
+const fs::path kTemplate = fs::path(BRASH_SOURCE_DIR) / "postproc/study_report/templates/study.md.tmpl";
+
+// The source template with the text of each block named in TEXTS replaced (written to DIR/study.md.tmpl).
+fs::path template_with(const fs::path& dir, const std::map<std::string, std::string>& texts) {
+  std::istringstream in(read(kTemplate));
+  std::string out;
+  bool skipping = false;
+  for (std::string line; std::getline(in, line);) {
+    const bool header = line.rfind("=== ", 0) == 0;
+    if (header) skipping = texts.count(line.substr(4, line.size() - 8)) > 0;
+    if (skipping && !header) continue;
+    out += line + "\n";
+    if (skipping) out += texts.at(line.substr(4, line.size() - 8)) + "\n\n";
+  }
+  const fs::path p = dir / "study.md.tmpl";
+  std::ofstream(p) << out;
+  return p;
+}
+
+// A study of one speed run (its section (b) uses the speed blocks).
+void write_speed_study(const fs::path& d) {
+  write_report(d / "runs/s1", "liggghts", "drag", 0.5, 2.0, 0.1);
+  std::ofstream(d / "manifest.tsv") << std::string(kHeader) +
+                                           "s1\tspeed\tU 0.5\tspeed_m_s\t0.5\t0\tjbc_quick\t0\truns/s1\tcmd s1\n";
+}
+
+}  // namespace
+
+TEST(StudyReport, TemplateBlocksWriteTheProse) {
+  const fs::path d = fresh_dir("template");
+  write_speed_study(d);
+  const fs::path tmpl = template_with(
+      d, {{"speed.method",
+           "# a comment line\nThe resistance rises with speed;\n  these lines join into one paragraph.\n\n"
+           "A second paragraph."},
+          {"sensitivity.group_missing", "No {{group}} runs\nhere."}});
+  ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --plot none --template '{}'", (d / "manifest.tsv").string(),
+                                    (d / "study.md").string(), tmpl.string())),
+            0)
+      << read(d / "tool.log");
+  const std::string md = read(d / "study.md");
+  EXPECT_NE(md.find("The resistance rises with speed; these lines join into one paragraph.\n\n"
+                    "A second paragraph.\n\n| run | engine |"),
+            std::string::npos)
+      << md;
+  EXPECT_EQ(md.find("Tanks show a linear trend"), std::string::npos) << md;
+  EXPECT_EQ(md.find("a comment line"), std::string::npos) << md;
+  EXPECT_NE(md.find("No ca runs here.\n\nNo friction_ice runs here."), std::string::npos) << md;
+  fs::remove_all(d);
+}
+
+TEST(StudyReport, MissingPlaceholderNamesTheTemplateAndThePlaceholder) {
+  const fs::path d = fresh_dir("template_bad");
+  write_speed_study(d);
+  const fs::path tmpl = template_with(d, {{"speed.method", "n rises by {{no_such_value}} per speed."}});
+  EXPECT_NE(run_tool(d, fmt::format("'{}' --out '{}' --plot none --template '{}'", (d / "manifest.tsv").string(),
+                                    (d / "study.md").string(), tmpl.string())),
+            0);
+  const std::string log = read(d / "tool.log");
+  EXPECT_NE(log.find(tmpl.string()), std::string::npos) << log;
+  EXPECT_NE(log.find("{{no_such_value}}"), std::string::npos) << log;
+  EXPECT_NE(log.find("speed.method"), std::string::npos) << log;
+  EXPECT_FALSE(fs::exists(d / "study.md"));  // no half-filled document
+  fs::remove_all(d);
+}
+
+TEST(StudyReport, MissingTemplateOrBlockIsAnError) {
+  const fs::path d = fresh_dir("template_missing");
+  write_speed_study(d);
+  const std::string args = fmt::format("'{}' --out '{}' --plot none", (d / "manifest.tsv").string(),
+                                       (d / "study.md").string());
+  EXPECT_NE(run_tool(d, args + fmt::format(" --template '{}'", (d / "none.tmpl").string())), 0);
+  EXPECT_NE(read(d / "tool.log").find((d / "none.tmpl").string()), std::string::npos) << read(d / "tool.log");
+  // a template that lacks a block the tool needs: the block is named with the template's file
+  std::string without;
+  std::istringstream in(read(kTemplate));
+  bool skipping = false;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("=== ", 0) == 0) skipping = line == "=== speed.method ===";
+    if (!skipping) without += line + "\n";
+  }
+  std::ofstream(d / "without.tmpl") << without;
+  EXPECT_NE(run_tool(d, args + fmt::format(" --template '{}'", (d / "without.tmpl").string())), 0);
+  const std::string log = read(d / "tool.log");
+  EXPECT_NE(log.find((d / "without.tmpl").string()), std::string::npos) << log;
+  EXPECT_NE(log.find("=== speed.method ==="), std::string::npos) << log;
   fs::remove_all(d);
 }

@@ -9,18 +9,18 @@ using nlohmann::json;
 
 namespace brash::post::study_report {
 
-std::string render_document(const Study& s, const DocumentOptions& options) {
-  std::string md = section_header(options.title, options.manifest_name, options.study_command);
-  md += section_failures(s);
-  md += section_paper(s);
-  md += section_setup(s);
-  md += section_gap(s);
-  if (options.figure_dir) md += section_figures(s, *options.figure_dir, options.doc_dir);
-  md += section_speed(s, options.speed_plot);
-  md += section_sensitivity(s);
-  md += section_paired(s);
-  md += section_engines(s);
-  md += section_runs(s);
+std::string render_document(const Study& s, const TextTemplate& text, const DocumentOptions& options) {
+  std::string md = section_header(text, options.title, options.manifest_name, options.study_command);
+  md += section_failures(s, text);
+  md += section_paper(s, text);
+  md += section_setup(s, text);
+  md += section_gap(s, text);
+  if (options.figure_dir) md += section_figures(s, text, *options.figure_dir, options.doc_dir);
+  md += section_speed(s, text, options.speed_plot);
+  md += section_sensitivity(s, text);
+  md += section_paired(s, text);
+  md += section_engines(s, text);
+  md += section_runs(s, text);
   return md;
 }
 

@@ -37,15 +37,19 @@ std::string engine_table(const std::vector<const Run*>& runs) {
   return md + "\n";
 }
 
-std::string so_far_table(const EngineSoFar& e) {
+std::string so_far_table(const EngineSoFar& e, const TextTemplate& text) {
   const Run &r = *e.run, &l = *e.liggghts;
   if (!e.error.empty()) return fmt::format("(the record of {} or {} is not readable: {})\n\n", r.ref, l.ref, e.error);
-  std::string md = fmt::format(
-      "{} ({} {}, {}) has reached t = {:.2f} s; beside {} (liggghts {}), in {} s bins of the "
-      "model-scale resistance (-fx):\n\n| t [s] | {} liggghts [N] | {} {} [N] | {} / {} - 1 |\n"
-      "|---|---|---|---|\n",
-      r.ref, r.engine, r.model, r.base_case, e.t_reached_s, l.ref, l.model, e.bin_s, l.ref, r.ref, r.engine, r.ref,
-      l.ref);
+  std::string md = text.fill("engines.so_far", {{"run", r.ref},
+                                                {"engine", r.engine},
+                                                {"model", r.model},
+                                                {"case", r.base_case},
+                                                {"t_reached", fmt::format("{:.2f}", e.t_reached_s)},
+                                                {"liggghts_run", l.ref},
+                                                {"liggghts_model", l.model},
+                                                {"bin", fmt::format("{}", e.bin_s)}});
+  md += fmt::format("\n\n| t [s] | {} liggghts [N] | {} {} [N] | {} / {} - 1 |\n|---|---|---|---|\n", l.ref, r.ref,
+                    r.engine, r.ref, l.ref);
   for (std::size_t b = 0; b < e.run_N.size(); ++b) {
     const double mine = e.run_N[b], ref = e.liggghts_N[b];
     const bool both = std::isfinite(mine) && std::isfinite(ref) && ref != 0.0;
@@ -57,18 +61,18 @@ std::string so_far_table(const EngineSoFar& e) {
 
 }  // namespace
 
-std::string section_engines(const Study& s) {
+std::string section_engines(const Study& s, const TextTemplate& text) {
   std::string md = "## (d) Engines\n\n";
   const auto runs = engine_runs(s);
   const auto engines = engines_with_results(s);
   if (engines.size() < 2)
-    md += fmt::format("Only {} engine(s) with completed runs in groups `paper`/`engine` ({}); the engine table "
-                      "needs at least two of LIGGGHTS, ODE, YADE.\n\n",
-                      engines.size(), engines.empty() ? std::string("none") : *engines.begin());
+    md += text.fill("engines.too_few", {{"count", std::to_string(engines.size())},
+                                        {"engines", engines.empty() ? std::string("none") : *engines.begin()}}) +
+          "\n\n";
   const bool failed = std::any_of(runs.begin(), runs.end(), [](const Run* r) { return !r->ok; });
   if (engines.size() < 2 && !failed) return md;
   md += engine_table(runs);
-  for (const auto& e : engines_so_far(runs)) md += so_far_table(e);
+  for (const auto& e : engines_so_far(runs)) md += so_far_table(e, text);
   return md;
 }
 

@@ -14,20 +14,19 @@ std::string run_table(const std::vector<const Run*>& runs, const std::string& ce
   return md + "\n";
 }
 
-std::string missing_ensembles(const Study& s) {
+std::string missing_ensembles(const Study& s, const TextTemplate& text) {
   std::vector<const Paired*> missing;
   for (const Paired& p : s.paired)
     if (!p.ok) missing.push_back(&p);
   if (missing.empty()) return "";
-  std::string md = fmt::format("**{} paired ensemble(s) have no usable summary** (kept in section (c)):\n\n",
-                               missing.size());
+  std::string md = text.fill("failures.missing_ensembles", {{"count", std::to_string(missing.size())}}) + "\n\n";
   for (const Paired* p : missing) md += fmt::format("- {}: {}\n", p->ref, md_escape(p->problem));
   return md + "\n";
 }
 
 }  // namespace
 
-std::string section_failures(const Study& s) {
+std::string section_failures(const Study& s, const TextTemplate& text) {
   std::vector<const Run*> bad, running;
   for (const Run& r : s.runs) {
     if (r.in_progress)
@@ -37,19 +36,13 @@ std::string section_failures(const Study& s) {
   }
   std::string md;
   if (!running.empty())
-    md += fmt::format(
-              "## Runs in progress\n\n{} run(s) have no result yet: still running (resumed in pieces), or "
-              "stopped part-way with the machine that ran them (the state says which, and how far each got); "
-              "their rows below have no result.\n\n",
-              running.size()) +
-          run_table(running, "state");
-  md += "## Runs that failed or are missing\n\n" + missing_ensembles(s);
-  if (bad.empty())
-    return md + (running.empty() ? "None: every run listed in the manifest has a complete report.json.\n\n"
-                                 : "None: every other run listed in the manifest has a complete report.json.\n\n");
-  md += fmt::format("**{} of {} run(s) have no usable result.** They are kept in every table below with "
-                    "their reason, never dropped.\n\n",
-                    bad.size(), s.runs.size());
+    md += "## Runs in progress\n\n" + text.fill("failures.in_progress", {{"count", std::to_string(running.size())}}) +
+          "\n\n" + run_table(running, "state");
+  md += "## Runs that failed or are missing\n\n" + missing_ensembles(s, text);
+  if (bad.empty()) return md + text.fill(running.empty() ? "failures.none" : "failures.none_other") + "\n\n";
+  md += text.fill("failures.unusable",
+                  {{"count", std::to_string(bad.size())}, {"total", std::to_string(s.runs.size())}}) +
+        "\n\n";
   return md + run_table(bad, "reason");
 }
 

@@ -27,8 +27,8 @@ struct Link {  // a file of the figure folder as the document links it
 
 // Fig. 6 analog: the paper case's runs beside the paper's numbers; reduced cases (their lambda^3-scaled
 // scenes are not the paper's ship in the paper's channel) only when no paper-case run is complete.
-std::string bars_figure(const Study& s, const std::vector<const Run*>& runs, const fs::path& fig_dir,
-                        const Link& link) {
+std::string bars_figure(const Study& s, const TextTemplate& text, const std::vector<const Run*>& runs,
+                        const fs::path& fig_dir, const Link& link) {
   const bool any_paper = any_paper_case(runs);
   std::vector<const Run*> bars;
   for (const Run* r : runs)
@@ -37,17 +37,16 @@ std::string bars_figure(const Study& s, const std::vector<const Run*>& runs, con
   write_paper_bars(f, bars, s.paper, any_paper);
   const std::string err = run_gnuplot(f.gp, f.png);
   if (!err.empty()) return "Fig. 6 analog not produced: " + err + ".\n\n";
-  return fmt::format(
-      "![full-scale resistance vs the paper]({})\n\nFig. 6 analog: `{}` (data `{}`, script `{}`). Blue: "
-      "{} (CI95 bars); red: our FSICR R_CH from the measured hull; grey: the paper.\n\n",
-      link(f.png), link(f.png), link(f.dat), link(f.gp),
-      any_paper ? "our runs of the paper case (the reduced cases' are in the table above)" : "our runs, reduced cases");
+  const std::string blue = text.fill(any_paper ? "figures.bars_blue_paper_case" : "figures.bars_blue_reduced");
+  return fmt::format("![full-scale resistance vs the paper]({})\n\n{}\n\n", link(f.png),
+                     text.fill("figures.bars_caption",
+                               {{"image", link(f.png)}, {"data", link(f.dat)}, {"script", link(f.gp)}, {"blue", blue}}));
 }
 
 // The paper case's resistance histories in one plot (full scale, 0.5 s bin means of -fx; runs still going
 // too, up to where their record is): the shape of each fluid model's history beside the paper's two levels,
 // which is what tells a plateau from a rise.
-std::string histories_figure(const Study& s, const fs::path& fig_dir, const Link& link) {
+std::string histories_figure(const Study& s, const TextTemplate& text, const fs::path& fig_dir, const Link& link) {
   const PaperHistories h = paper_histories(s, 0.5);
   std::string md;
   for (const auto& [ref, why] : h.unreadable) md += fmt::format("(history of {} not readable: {})\n\n", ref, why);
@@ -56,11 +55,8 @@ std::string histories_figure(const Study& s, const fs::path& fig_dir, const Link
   write_paper_histories(f, h, s.paper);
   const std::string err = run_gnuplot(f.gp, f.png);
   if (!err.empty()) return md + "Paper-case history plot not produced: " + err + ".\n\n";
-  return md + fmt::format(
-                  "![paper-case resistance histories]({})\n\nThe paper case's resistance histories (`{}`, data `{}`): "
-                  "full scale, 0.5 s means of the hull's x force, window shaded, the paper's two levels dashed (its "
-                  "Fig. 5 shows a plateau from ~15 s).\n\n",
-                  link(f.png), link(f.png), link(f.dat));
+  return md + fmt::format("![paper-case resistance histories]({})\n\n{}\n\n", link(f.png),
+                          text.fill("figures.histories_caption", {{"image", link(f.png)}, {"data", link(f.dat)}}));
 }
 
 // The newest ice_views_*.png of a folder, or an empty path.
@@ -75,22 +71,22 @@ fs::path latest_ice_views(const fs::path& dir) {
   return views;
 }
 
-std::string paraview_note(const Run& r, const fs::path& full_dir) {
-  if (fs::exists(r.run_dir / "particles.pvd"))
-    return fmt::format(" ParaView: open `{}` and `{}`.", show_path(r.run_dir / "particles.pvd"),
-                       show_path(r.run_dir / "hull.pvd"));
+std::string paraview_note(const Run& r, const fs::path& full_dir, const TextTemplate& text) {
+  const auto open = [&](const fs::path& dir) {
+    return " " + text.fill("figures.paraview", {{"particles", show_path(dir / "particles.pvd")},
+                                                {"hull", show_path(dir / "hull.pvd")}});
+  };
+  if (fs::exists(r.run_dir / "particles.pvd")) return open(r.run_dir);
   if (full_dir.empty()) return "";
   // a copy of the run's outputs (brash-study): the ParaView files stay in the full run directory
   return fs::exists(full_dir / "particles.pvd")
-             ? fmt::format(" ParaView: open `{}` and `{}`.", show_path(full_dir / "particles.pvd"),
-                           show_path(full_dir / "hull.pvd"))
-             : fmt::format(" ParaView files: `particles.pvd` and `hull.pvd` in `{}`, on the machine that ran it.",
-                           show_path(full_dir));
+             ? open(full_dir)
+             : " " + text.fill("figures.paraview_elsewhere", {{"run_dir", show_path(full_dir)}});
 }
 
 // Fig. 5 and 4 analogs of one run: its own plots, copied into the figure folder; views for the first run of
 // each engine (ENGINES_WITH_VIEWS) and for every paper-case run (the study's headline runs).
-std::string run_figures(const Run& r, const fs::path& fig_dir, const Link& link,
+std::string run_figures(const Run& r, const TextTemplate& text, const fs::path& fig_dir, const Link& link,
                         std::set<std::string>& engines_with_views) {
   std::string md = fmt::format("**{}** ({} {}, {}):", r.ref, r.engine, r.model, scale_label(r));
   // the plots are in the run directory, or (a copy without its plots, brash-study's study_runs) in the full run
@@ -101,11 +97,10 @@ std::string run_figures(const Run& r, const fs::path& fig_dir, const Link& link,
   if (fs::exists(fh)) {
     const fs::path copy = fig_dir / (r.ref + "_force_history.png");
     fs::copy_file(fh, copy, fs::copy_options::overwrite_existing);
-    md += fmt::format("\n\n![{} force history]({})\n\nFig. 5 analog: hull force history x/y/z and the window mean "
-                      "(from `{}`).",
-                      r.ref, link(copy), show_path(fh));
+    md += fmt::format("\n\n![{} force history]({})\n\n{}", r.ref, link(copy),
+                      text.fill("figures.force_history_caption", {{"source", show_path(fh)}}));
   } else {
-    md += fmt::format(" no force_history.png in `{}` (run brash-post on it).", show_path(r.run_dir));
+    md += " " + text.fill("figures.no_force_history", {{"run_dir", show_path(r.run_dir)}});
   }
   const bool want_views = !engines_with_views.count(r.engine) || r.base_case == kPaperCase;
   const fs::path views = want_views ? latest_ice_views(plot_dir) : fs::path();
@@ -113,28 +108,28 @@ std::string run_figures(const Run& r, const fs::path& fig_dir, const Link& link,
     engines_with_views.insert(r.engine);
     const fs::path copy = fig_dir / (r.ref + "_ice_views.png");
     fs::copy_file(views, copy, fs::copy_options::overwrite_existing);
-    md += fmt::format("\n\n![{} ice views]({})\n\nFig. 4 analog: the ice around the hull from above and below at "
-                      "the last dump (from `{}`).",
-                      r.ref, link(copy), show_path(views));
+    md += fmt::format("\n\n![{} ice views]({})\n\n{}", r.ref, link(copy),
+                      text.fill("figures.ice_views_caption", {{"source", show_path(views)}}));
   }
-  return md + paraview_note(r, full_dir) + "\n\n";
+  return md + paraview_note(r, full_dir, text) + "\n\n";
 }
 
 }  // namespace
 
-std::string section_figures(const Study& s, const fs::path& fig_dir, const fs::path& doc_dir) {
+std::string section_figures(const Study& s, const TextTemplate& text, const fs::path& fig_dir,
+                            const fs::path& doc_dir) {
   std::string md = "### Figures (analogs of the paper's Fig. 4, 5 and 6)\n\n";
   const auto runs = completed_runs(s, "paper");
-  if (runs.empty()) return md + "No completed run in section (a): no figures.\n\n";
+  if (runs.empty()) return md + text.fill("figures.none") + "\n\n";
   std::error_code ec;
   fs::remove_all(fig_dir, ec);
   fs::create_directories(fig_dir);
   const Link link{
       fs::relative(fs::absolute(fig_dir), fs::absolute(doc_dir.empty() ? fs::path(".") : doc_dir), ec).string()};
-  md += bars_figure(s, runs, fig_dir, link);
-  md += histories_figure(s, fig_dir, link);
+  md += bars_figure(s, text, runs, fig_dir, link);
+  md += histories_figure(s, text, fig_dir, link);
   std::set<std::string> engines_with_views;
-  for (const Run* r : runs) md += run_figures(*r, fig_dir, link, engines_with_views);
+  for (const Run* r : runs) md += run_figures(*r, text, fig_dir, link, engines_with_views);
   return md;
 }
 

@@ -28,23 +28,21 @@ std::string candidate_rows(const Study& s) {
 
 }  // namespace
 
-std::string section_gap(const Study& s) {
+std::string section_gap(const Study& s, const TextTemplate& text) {
   std::string gaps;
   for (const auto& g : gaps_to_paper(s))
-    gaps += fmt::format(
-        "- {} ({} {}): {} kN; the paper's {:.0f} kN is **{:+.1f} %** on it (± {:.1f} % from our "
-        "CI95 alone)\n",
-        g.run->ref, g.run->engine, g.run->model, pm(g.run->full_kN, g.run->full_ci_kN, 1), g.paper_kN, g.gap_pct,
-        g.ci_pct);
+    gaps += text.fill("gap.run", {{"run", g.run->ref},
+                                  {"engine", g.run->engine},
+                                  {"model", g.run->model},
+                                  {"ours_kN", pm(g.run->full_kN, g.run->full_ci_kN, 1)},
+                                  {"paper_kN", fmt::format("{:.0f}", g.paper_kN)},
+                                  {"gap", fmt::format("{:+.1f}", g.gap_pct)},
+                                  {"gap_ci", fmt::format("{:.1f}", g.ci_pct)}}) +
+            "\n";
   if (gaps.empty()) return "";  // nothing to explain yet
-  return "### The gap to the paper, and the candidates the study measured\n\n" + gaps +
-         "\nEach candidate below is a change of one input, measured on a reduced case (or on the paper case "
-         "itself, group paper_candidates) against its baseline (section (c); one run per value, so a change "
-         "inside its CI is not resolved; rows P1, P2, ... are paired-seed ensembles, which resolve a few per "
-         "cent; jbc_bench's window is the bow's first second in the ice, too short for the fluid models' "
-         "difference to build up, jbc_quick's is 2-4 s). A candidate can close the gap only if its change has "
-         "the gap's sign and a similar size; the set-up table above says which inputs the paper does not "
-         "state.\n\n"
+  return "### The gap to the paper, and the candidates the study measured\n\n" + gaps + "\n" +
+         text.fill("gap.candidates") +
+         "\n\n"
          "| candidate (parameter: value) | case, engine, fluid model | change vs baseline ± CI95 | runs |\n"
          "|---|---|---|---|\n" +
          candidate_rows(s) + "\n";

@@ -8,13 +8,11 @@ namespace brash::post::study_report {
 
 // The paired-seed ensembles: one run per value cannot resolve a change smaller than the run-to-run scatter of
 // a chaotic contact scene (~10-20 % CI on the reduced cases); the same packings run both ways can.
-std::string section_paired(const Study& s) {
+std::string section_paired(const Study& s, const TextTemplate& text) {
   if (s.paired.empty()) return "";
   std::string md =
-      "### Paired-seed ensembles\n\n"
-      "Each packing seed of the case runs as side A and as side B (the change); the change is the mean over "
-      "the pairs of (B − A) / mean of the pair, with its 95 % CI (Student t), so the packings' own scatter "
-      "cancels (`bench/rank_ensemble.sh`). Resolved: the CI excludes 0.\n\n"
+      "### Paired-seed ensembles\n\n" + text.fill("paired.intro") +
+      "\n\n"
       "| ensemble | change (parameter: value) | what | case | side A → side B | pairs | mean A / B [N] | "
       "(B − A) / mean ± CI95 | resolved |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const Paired& p : s.paired) {
@@ -28,7 +26,7 @@ std::string section_paired(const Study& s) {
                       md_escape(p.side_a), md_escape(p.side_b), p.pairs, p.mean_a_N, p.mean_b_N, 100.0 * p.diff_rel,
                       100.0 * p.ci95_rel, p.resolved() ? "yes" : "no");
   }
-  md += "\nCommands (each re-prints its table from the runs it finds and runs the missing ones):\n\n";
+  md += "\n" + text.fill("paired.commands") + "\n\n";
   for (const Paired& p : s.paired)
     md += fmt::format("- {} (`{}`): `{}`\n", p.ref, show_path(p.row.run_dir), md_escape(p.row.command));
   return md + "\n";

@@ -14,15 +14,15 @@ std::string paper_rch_cell(const brash::ReferenceSpec& paper) {
   return paper.fsicr_R_CH_kN ? num(*paper.fsicr_R_CH_kN, 0) : "n/a";
 }
 
-std::string paper_values(const brash::ReferenceSpec& paper) {
+// The paper's numbers as the paper case declares them, for the text's placeholders.
+TextValues paper_values(const brash::ReferenceSpec& paper) {
   const double paper_am = paper_full_kN(paper, "added_mass"), paper_drag = paper_full_kN(paper, "drag");
-  return fmt::format(
-      "Paper (its values as the paper case declares them): added mass {:.0f} kN, drag {:.0f} kN (difference "
-      "{:+.1f} %), FSICR R_CH {} kN, ratio R_CH / R_sim {} for its added-mass result (for drag, {} is derived, "
-      "not stated). Our R_CH uses the hull parameters measured on our STL (columns L, B, T, alpha, phi2, A_wf "
-      "at full scale).\n\n",
-      paper_am, paper_drag, 100 * (paper_am / paper_drag - 1), paper_rch_cell(paper),
-      paper_ratio_cell(paper, "added_mass"), paper_ratio_cell(paper, "drag"));
+  return {{"paper_added_mass_kN", fmt::format("{:.0f}", paper_am)},
+          {"paper_drag_kN", fmt::format("{:.0f}", paper_drag)},
+          {"paper_difference", fmt::format("{:+.1f}", 100 * (paper_am / paper_drag - 1))},
+          {"paper_R_CH_kN", paper_rch_cell(paper)},
+          {"paper_ratio_added_mass", paper_ratio_cell(paper, "added_mass")},
+          {"paper_ratio_drag", paper_ratio_cell(paper, "drag")}};
 }
 
 std::string comparison_table(const Study& s, const std::vector<const Row*>& rows) {
@@ -49,10 +49,10 @@ std::string comparison_table(const Study& s, const std::vector<const Row*>& rows
   return md;
 }
 
-std::string hull_parameters(const std::vector<const Run*>& completed) {
+std::string hull_parameters(const std::vector<const Run*>& completed, const TextTemplate& text) {
   std::string md =
-      "\nHull parameters used for R_CH (full scale, measured on the STL by brash-post):\n\n"
-      "| run | L [m] | B [m] | T [m] | alpha [deg] | phi2 [deg] | A_wf [m²] |\n|---|---|---|---|---|---|---|\n";
+      "\n" + text.fill("paper.hull_parameters") +
+      "\n\n| run | L [m] | B [m] | T [m] | alpha [deg] | phi2 [deg] | A_wf [m²] |\n|---|---|---|---|---|---|---|\n";
   for (const Run* r : completed)
     md += fmt::format("| {} | {} | {} | {} | {} | {} | {} |\n", r->ref, optnum(r->lpp), optnum(r->beam),
                       optnum(r->draft), optnum(r->alpha, 1), optnum(r->phi2, 1), optnum(r->awf, 0));
@@ -61,12 +61,10 @@ std::string hull_parameters(const std::vector<const Run*>& completed) {
 
 // Added mass vs drag, per engine and base case: our added_mass (Eq. 2 replacing Eq. 1) and our both (Eq. 2
 // added to Eq. 1), the two readings of the paper's added-mass model, each against drag.
-std::string added_mass_vs_drag_table(const Study& s) {
+std::string added_mass_vs_drag_table(const Study& s, const TextTemplate& text) {
   std::string md =
-      "\nAdded mass vs drag (same engine and case): (R_added - R_drag) / R_drag, where R_added is the "
-      "added-mass model read as Eq. 2 alone (`added_mass`) or Eq. 2 added to the Eq. 1 drag (`both`); paper: "
-      "(393 - 378) / 378 = +4.0 %.\n\n"
-      "| engine | case | added-mass model | R added mass [N] | R drag [N] | difference | CI95 of the "
+      "\n" + text.fill("paper.added_mass_vs_drag", paper_values(s.paper)) +
+      "\n\n| engine | case | added-mass model | R added mass [N] | R drag [N] | difference | CI95 of the "
       "difference |\n"
       "|---|---|---|---|---|---|---|\n";
   const auto pairs = added_mass_vs_drag(s);
@@ -80,17 +78,15 @@ std::string added_mass_vs_drag_table(const Study& s) {
 
 }  // namespace
 
-std::string section_paper(const Study& s) {
+std::string section_paper(const Study& s, const TextTemplate& text) {
   std::string md = "## (a) Paper comparison\n\n";
   const auto rows = rows_of(s, "paper");
-  if (rows.empty()) return md + "No run of group `paper` in this study.\n\n";
+  if (rows.empty()) return md + text.fill("paper.no_runs") + "\n\n";
   const auto completed = completed_runs(s, "paper");
-  if (!any_paper_case(completed))
-    md += "**No completed run of the paper case (cases/jbc_ia_5kn) is in this study. Every row below is a "
-          "reduced case: its full-scale number is the reduced scene scaled by lambda^3, NOT the paper's result "
-          "and not comparable one to one with 393 / 378 kN.**\n\n";
-  return md + paper_values(s.paper) + comparison_table(s, rows) + hull_parameters(completed) +
-         added_mass_vs_drag_table(s);
+  const TextValues paper = paper_values(s.paper);
+  if (!any_paper_case(completed)) md += text.fill("paper.no_paper_case", paper) + "\n\n";
+  return md + text.fill("paper.values", paper) + "\n\n" + comparison_table(s, rows) +
+         hull_parameters(completed, text) + added_mass_vs_drag_table(s, text);
 }
 
 }  // namespace brash::post::study_report

@@ -29,30 +29,28 @@ std::string group_row(const Study& s, const Row& row, const Baselines& base) {
                      pm(r.mean_N, r.ci_N), pm(r.full_kN, r.full_ci_kN, 1), d, dci, status_cell(r));
 }
 
-std::string group_table(const Study& s, const std::string& group) {
+std::string group_table(const Study& s, const std::string& group, const TextTemplate& text) {
   const Baselines base = baselines_of(s, group);
   std::string md = fmt::format(
-      "### {} (parameter `{}`)\n\nChange vs the baseline of the same engine and fluid model{}; "
-      "\"Δ / CI\" = change over the combined CI95 sqrt(CI² + CI_base²): |Δ / CI| < 1 means the "
-      "change is not resolved by these runs.\n\n"
+      "### {} (parameter `{}`)\n\n{}\n\n"
       "| run | value | engine | fluid model | R model [N] ± CI95 | R full [kN] ± CI95 | Δ vs baseline [N] "
       "| Δ / CI | status |\n"
       "|---|---|---|---|---|---|---|---|---|\n",
       group, base.param.empty() ? "?" : base.param,
-      base.varies_model ? " (here the same engine: the group varies the fluid model)" : "");
+      text.fill(base.varies_model ? "sensitivity.intro_model_group" : "sensitivity.intro"));
   for (const Row* row : rows_of(s, group)) md += group_row(s, *row, base);
   return md + "\n";
 }
 
 }  // namespace
 
-std::string section_sensitivity(const Study& s) {
+std::string section_sensitivity(const Study& s, const TextTemplate& text) {
   std::string md = "## (c) Sensitivities\n\n";
   const auto groups = sensitivity_groups(s);
   for (const char* expected : {"ca", "friction_ice", "density_ice"})
     if (std::find(groups.begin(), groups.end(), expected) == groups.end())
-      md += fmt::format("Group `{}`: no run in this study.\n\n", expected);
-  for (const auto& g : groups) md += group_table(s, g);
+      md += text.fill("sensitivity.group_missing", {{"group", expected}}) + "\n\n";
+  for (const auto& g : groups) md += group_table(s, g, text);
   return md;
 }
 

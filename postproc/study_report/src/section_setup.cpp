@@ -61,13 +61,36 @@ std::string our_channel(const Column& col) {
 }
 
 struct Item {  // one row of the table
-  std::string name, paper, why;
+  std::string name;
+  std::string text_block;  // the template's <text_block>.paper (the paper's set-up) and <text_block>.why
   std::function<std::string(const Column&)> ours;
 };
 
-std::vector<Item> items();
+std::vector<Item> items() {
+  return {
+      {"engine, contacts", "setup.contacts", our_contacts},
+      {"time step", "setup.time_step", our_time_step},
+      {"ice pieces", "setup.ice", our_ice},
+      {"friction ice-ice / ice-hull", "setup.friction",
+       [](const Column& c) { return fmt::format("{:g} / {:g}", c.c->friction.ice_ice, c.c->friction.ice_hull); }},
+      {"added mass", "setup.added_mass",
+       [](const Column& c) {
+         return fmt::format("{}, {}", brash::to_string(c.c->fluid.ca_table), brash::to_string(c.c->fluid.treatment));
+       }},
+      {"fluid model", "setup.fluid_model",
+       [](const Column& c) { return std::string(brash::to_string(c.c->fluid.model)); }},
+      {"drag (Eq. 1)", "setup.drag",
+       [](const Column& c) {
+         return fmt::format("C_D = {:g}, {}", c.c->fluid.drag_coefficient, brash::to_string(c.c->fluid.drag_law));
+       }},
+      {"idle far-field ice", "setup.far_field", our_far_field},
+      {"channel ends", "setup.channel_ends", our_channel},
+      {"FSICR R_CH hull parameters", "setup.fsicr",
+       [](const Column&) { return std::string("measured on the STL (table above)"); }},
+  };
+}
 
-std::string setup_table(const std::vector<Column>& cols) {
+std::string setup_table(const std::vector<Column>& cols, const TextTemplate& text) {
   std::string md =
       "### Our paper-case set-up vs the paper's (from each run's case.yaml and meta.json)\n\n| item | paper |";
   for (const auto& c : cols) md += " " + c.head + " |";
@@ -75,16 +98,16 @@ std::string setup_table(const std::vector<Column>& cols) {
   for (std::size_t i = 0; i < cols.size(); ++i) md += "---|";
   md += "---|\n";
   for (const auto& it : items()) {
-    md += fmt::format("| {} | {} |", it.name, it.paper);
+    md += fmt::format("| {} | {} |", it.name, text.fill(it.text_block + ".paper"));
     for (const auto& c : cols) md += " " + md_escape(it.ours(c)) + " |";
-    md += " " + it.why + " |\n";
+    md += " " + text.fill(it.text_block + ".why") + " |\n";
   }
   return md + "\n";
 }
 
 }  // namespace
 
-std::string section_setup(const Study& s) {
+std::string section_setup(const Study& s, const TextTemplate& text) {
   std::string md;
   std::vector<Column> cols;
   for (const Run* r : started_paper_case_runs(s)) {
@@ -96,57 +119,7 @@ std::string section_setup(const Study& s) {
                                 r->meta.value("fluid_model", std::string("?"))),
                     &*r->resolved_case, &r->meta});
   }
-  return cols.empty() ? md : md + setup_table(cols);
+  return cols.empty() ? md : md + setup_table(cols, text);
 }
-
-namespace {
-
-std::vector<Item> items() {
-  return {
-      {"engine, contacts", "ODE: rigid spheres, contact joints",
-       "LIGGGHTS is soft-sphere DEM: E is a numerical stiffness (sea ice has ~GPa); E / 16 with an 8x longer "
-       "step measured −0.50 % ± 0.86 % against 5 MPa (paired ensembles, docs/performance.md \"Softer contacts\"). "
-       "brash-ode is the paper's method",
-       our_contacts},
-      {"time step", "not stated",
-       "LIGGGHTS: 18 % of the Rayleigh time of the smallest sphere; ODE: dt checked in docs/ode.md", our_time_step},
-      {"ice pieces", "> 420,000 spheres, d = 0.017578 m normally distributed, two layers, porosity 0.28",
-       "the paper gives no spread of d (5 % here); the porosity is kept as ice volume per channel area and "
-       "the bed takes its natural thickness (docs/physics.md)",
-       our_ice},
-      {"friction ice-ice / ice-hull", "1.35 / 0.1", "the paper's values",
-       [](const Column& c) { return fmt::format("{:g} / {:g}", c.c->friction.ice_ice, c.c->friction.ice_hull); }},
-      {"added mass", "Table 1 (Ca by situation; the text also names Ca = 2)",
-       "Table 1 vs the text's Ca = 2 vs Ca = 0: section (c), parameter fluid.ca_table",
-       [](const Column& c) {
-         return fmt::format("{}, {}", brash::to_string(c.c->fluid.ca_table), brash::to_string(c.c->fluid.treatment));
-       }},
-      {"fluid model",
-       "added mass: \"an added mass model is implemented into the existing fluid force model\" "
-       "(Eq. 1 drag); drag: Eq. 1 alone",
-       "the paper's words allow Eq. 2 replacing Eq. 1 (our added_mass, docs/physics.md) or Eq. 2 added to it "
-       "(our both); section (a)'s \"added mass vs drag\" table gives each against drag, the paper's +4 % is "
-       "what both gives: docs/paper_gap.md, section (c) parameter fluid.model",
-       [](const Column& c) { return std::string(brash::to_string(c.c->fluid.model)); }},
-      {"drag (Eq. 1)", "C_D not stated",
-       "sphere drag coefficient (docs/physics.md); with drag in, C_D sets the level: "
-       "docs/paper_gap.md, section (c) parameter fluid.drag_coefficient",
-       [](const Column& c) {
-         return fmt::format("C_D = {:g}, {}", c.c->fluid.drag_coefficient, brash::to_string(c.c->fluid.drag_law));
-       }},
-      {"idle far-field ice", "not stated",
-       "a frozen far field is biased +8 to +20 % (docs/performance.md \"The far field's error\")", our_far_field},
-      {"channel ends", "21.0 x 2.25 m; what bounds the ends is not stated",
-       "open ends let the floating bed relax into open water, and late in a run that relaxation meets the "
-       "bow's push (bench/channel_end_spread.py on each paper run, docs/paper_gap.md); an end wall would be "
-       "the frozen wall the far-field ensembles measured (docs/performance.md)",
-       our_channel},
-      {"FSICR R_CH hull parameters", "not given (R_CH = 999 kN)",
-       "measured on our STL: docs/fsicr_vs_paper.md explains the difference to 999 kN",
-       [](const Column&) { return std::string("measured on the STL (table above)"); }},
-  };
-}
-
-}  // namespace
 
 }  // namespace brash::post::study_report

@@ -44,28 +44,28 @@ std::string fit_table(const std::vector<SpeedFit>& fits) {
 }
 
 // Points with CI bars and the fitted lines, log-log (gnuplot pngcairo).
-std::string speed_plot(const std::vector<SpeedFit>& fits, const std::filesystem::path& plot_png) {
+std::string speed_plot(const std::vector<SpeedFit>& fits, const std::filesystem::path& plot_png,
+                       const TextTemplate& text) {
   const PlotFiles f = plot_files(plot_png);
   write_speed_sweep(f, fits);
   const std::string err = run_gnuplot(f.gp, f.png);
   if (!err.empty()) return "Plot not produced: " + err + ".\n\n";
-  return fmt::format("![speed sweep]({})\n\nPlot: `{}` (data `{}`, script `{}`).\n\n", f.png.filename().string(),
-                     f.png.filename().string(), f.dat.filename().string(), f.gp.filename().string());
+  return fmt::format("![speed sweep]({})\n\n{}\n\n", f.png.filename().string(),
+                     text.fill("speed.plot_caption", {{"image", f.png.filename().string()},
+                                                      {"data", f.dat.filename().string()},
+                                                      {"script", f.gp.filename().string()}}));
 }
 
 }  // namespace
 
-std::string section_speed(const Study& s, const std::filesystem::path& plot_png) {
+std::string section_speed(const Study& s, const TextTemplate& text, const std::filesystem::path& plot_png) {
   std::string md = "## (b) Speed sweep: R ∝ U^n\n\n";
   const auto rows = rows_of(s, "speed");
-  if (rows.empty()) return md + "No run of group `speed` in this study.\n\n";
-  md += "Model-scale resistance vs model-scale speed; n = slope of a least-squares line through (ln U, ln R), "
-        "± its 95 % confidence interval (Student t with speeds - 2 degrees of freedom times its standard error, "
-        "SE; needs >= 3 speeds). Tanks show a linear trend (n ≈ 1), earlier simulations "
-        "quadratic (n ≈ 2).\n\n";
+  if (rows.empty()) return md + text.fill("speed.no_runs") + "\n\n";
+  md += text.fill("speed.method") + "\n\n";
   const auto fits = speed_fits(s);
   md += run_table(s, rows) + fit_table(fits);
-  return plot_png.empty() ? md : md + speed_plot(fits, plot_png);
+  return plot_png.empty() ? md : md + speed_plot(fits, plot_png, text);
 }
 
 }  // namespace brash::post::study_report

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <brash/post/study_report/study.hpp>
+#include <brash/post/study_report/text_template.hpp>
 
 namespace brash::post::study_report {
 
@@ -19,8 +20,9 @@ struct DocumentOptions {
   std::optional<std::filesystem::path> figure_dir;  // Fig. 4/5/6 analogs (unset: no figures)
 };
 
-// The markdown of the document, section by section; writes the figures and the speed plot on the way.
-std::string render_document(const Study& s, const DocumentOptions& options);
+// The markdown of the document, section by section, its prose from TEXT; writes the figures and the speed plot
+// on the way.
+std::string render_document(const Study& s, const TextTemplate& text, const DocumentOptions& options);
 
 // The speed fits, every run's and ensemble's state, and the counts of failed and running ones.
 nlohmann::json summary_json(const Study& s);
