@@ -53,7 +53,7 @@ Result run(const fs::path& case_dir, const std::string& duration) {
   const fs::path out = case_dir.parent_path() / "run";
   const fs::path err = case_dir.parent_path() / "stderr.txt";
   const std::string cmd = std::string("'") + BRASH_ODE_EXE + "' '" + case_dir.string() + "' --out '" +
-                          out.string() + "' --duration " + duration + " --no-progress > /dev/null 2> '" +
+                          out.string() + "' --duration " + duration + " --no-progress --no-post > /dev/null 2> '" +
                           err.string() + "'";
   const int st = std::system(cmd.c_str());
   return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, slurp(err), slurp(out / "meta.json"), out};

@@ -35,11 +35,11 @@ int run(const std::string& cmd) {
 
 std::string base_cmd(const fs::path& out) {
   return std::string("'") + BRASH_ODE_EXE + "' '" + BRASH_SMOKE_CASE + "' --out '" + out.string() +
-         "' --duration 0.2 --restart-every 0.04 --no-progress";
+         "' --duration 0.2 --restart-every 0.04 --no-progress --no-post";
 }
 
 std::string resume_cmd(const fs::path& dir) {
-  return std::string("'") + BRASH_ODE_EXE + "' --resume '" + dir.string() + "' --no-progress > /dev/null";
+  return std::string("'") + BRASH_ODE_EXE + "' --resume '" + dir.string() + "' --no-progress --no-post > /dev/null";
 }
 
 std::string slurp(const fs::path& p) {
@@ -120,14 +120,15 @@ TEST_F(Restart, StopAfterStepThenResumeReproducesTheUninterruptedRun) {
 }
 
 // SIGTERM (or Ctrl-C) is a handled stop: the step in progress ends, then the run is left resumable at that
-// very step (hull_force.csv rows up to it, a restart file of it, meta status "stopped"), exit 143 (128 +
+// very step (hull_force.csv rows up to it, a restart file of it, meta status "interrupted" as on every engine),
+// exit 143 (128 +
 // SIGTERM). The resume goes on from there and reproduces the uninterrupted run.
 TEST_F(Restart, SigtermStopsAtTheStepAndResumesFromIt) {
   const fs::path s = kRoot / "S";
   ASSERT_EQ(run(base_cmd(s) + " --stop-after-step 230 > /dev/null"), 143);
   const std::string meta = slurp(s / "meta.json");
-  EXPECT_NE(meta.find("\"status\": \"stopped\""), std::string::npos) << meta;
-  EXPECT_NE(meta.find("stopped by signal SIGTERM at step 230"), std::string::npos) << meta;
+  EXPECT_NE(meta.find("\"status\": \"interrupted\""), std::string::npos) << meta;
+  EXPECT_NE(meta.find("continue with brash-ode --resume " + s.string()), std::string::npos) << meta;
   EXPECT_NE(meta.find("\"steps_done\": 230"), std::string::npos) << meta;
   EXPECT_TRUE(fs::exists(s / "restart" / "restart_0000000230.bin"));  // not only the periodic 160
   EXPECT_EQ(read_csv(s / "hull_force.csv").size(),
@@ -156,12 +157,12 @@ TEST_F(Restart, RealKill9ThenResume) {
 TEST_F(Restart, ResumeOfARunStillGoingIsRefused) {
   const fs::path g = kRoot / "busy";
   const std::string cmd = std::string("'") + BRASH_ODE_EXE + "' '" + BRASH_SMOKE_CASE + "' --out '" + g.string() +
-                          "' --duration 5 --restart-every 0.04 --no-progress > /dev/null 2>&1 & echo $! > '" +
+                          "' --duration 5 --restart-every 0.04 --no-progress --no-post > /dev/null 2>&1 & echo $! > '" +
                           (kRoot / "busy.pid").string() + "'; i=0; while [ $i -lt 2000 ] && ! ls '" +
                           (g / "restart").string() + "'/restart_*.bin > /dev/null 2>&1; do sleep 0.01; i=$((i+1)); done";
   run(cmd);
   const fs::path err = kRoot / "busy.err";
-  const int rc = run(std::string("'") + BRASH_ODE_EXE + "' --resume '" + g.string() + "' --no-progress 2> '" +
+  const int rc = run(std::string("'") + BRASH_ODE_EXE + "' --resume '" + g.string() + "' --no-progress --no-post 2> '" +
                      err.string() + "'");
   const std::string meta = slurp(g / "meta.json");
   run("kill -9 $(cat '" + (kRoot / "busy.pid").string() + "') 2>/dev/null; sleep 0.3");
@@ -254,7 +255,7 @@ TEST_F(Restart, EarlyStopEndsWhereTheRuleSays) {
   ASSERT_NE(p, std::string::npos);
   yaml.replace(p, yaml.find('\n', p) - p, "  output_interval_s: 0.001");
   std::ofstream(cdir / "case.yaml") << yaml;
-  const std::string exe = std::string("'") + BRASH_ODE_EXE + "' '" + cdir.string() + "' --no-progress --out '";
+  const std::string exe = std::string("'") + BRASH_ODE_EXE + "' '" + cdir.string() + "' --no-progress --no-post --out '";
   ASSERT_EQ(run(exe + (kRoot / "es_full").string() + "' > /dev/null 2>&1"), 0);
   const auto full = read_csv(kRoot / "es_full" / "hull_force.csv");
   std::vector<double> t, r;

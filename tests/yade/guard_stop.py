@@ -60,7 +60,7 @@ def need(ok, what):
 
 
 if step_check == "refused":  # row 721 is line 723 of the packing
-    need(p.returncode == 1, "exit code 1 (got %d)" % p.returncode)
+    need(p.returncode == 2, "exit code 2, bad input (got %d)" % p.returncode)
     need(re.search(r"packing\.csv:723: piece id %s \(.*\) %s" % (piece, cause), p.stdout) is not None,
          "the error names the packing's line, the piece and the problem")
     need(not os.path.exists(run), "no run directory")

@@ -28,13 +28,13 @@ nlohmann::json read_meta(const fs::path& run_dir) {
   return nlohmann::json::parse(std::ifstream(run_dir / "meta.json"), nullptr, false);
 }
 
-// A run directory to resume: locked (a run still going is refused before anything is touched), not complete,
-// with a restart point.
-fs::path open_resumed_run(const Engine& engine, const fs::path& run_dir, std::optional<RunDirLock>& lock) {
-  lock.emplace(run_dir);
+bool is_complete(const fs::path& run_dir) {
   const auto meta = read_meta(run_dir);
-  if (!meta.is_discarded() && meta.value("status", "") == "complete")
-    throw InputError(run_dir.string() + ": the run is complete; nothing to resume");
+  return !meta.is_discarded() && meta.value("status", "") == "complete";
+}
+
+// A run directory to resume (locked by the caller): one with a restart point.
+fs::path open_resumed_run(const Engine& engine, const fs::path& run_dir) {
   if (engine.restarts(run_dir).empty())
     throw InputError(run_dir.string() +
                      ": no restart file to resume from: the run stopped before its first one was written; run the "
@@ -158,7 +158,14 @@ int drive(Engine& engine, const DriverOptions& o) {
     prepare_case_inputs(c, case_file, tag);
     const auto spheres = read_case_packing(c);  // checked against the case before any output
     engine.load(c, case_file, spheres);
-    run_dir = resume ? open_resumed_run(engine, o.resume_dir, lock) : open_new_run(engine, c, o, lock);
+    if (resume) {
+      lock.emplace(o.resume_dir);  // a run still going is refused before anything is touched
+      if (is_complete(o.resume_dir)) {
+        std::cerr << tag << " " << o.resume_dir.string() << ": the run is complete; nothing to resume\n";
+        return 0;
+      }
+    }
+    run_dir = resume ? open_resumed_run(engine, o.resume_dir) : open_new_run(engine, c, o, lock);
     engine.write_scene(run_dir, resume);
     if (o.prepare_only) {
       std::cout << run_dir.string() << "\n";
@@ -172,7 +179,8 @@ int drive(Engine& engine, const DriverOptions& o) {
     std::cerr << tag << " " << spheres.size() << " spheres -> " << run_dir.string() << "\n";
 
     StopSignals signals;  // from here on a signal is forwarded to the engine
-    RunMonitor monitor(engine, c, run_dir, *record, signals, restart_interval_s(c, o.restart_every_s), tag);
+    RunMonitor monitor(engine, c, run_dir, *record, signals, restart_interval_s(c, o.restart_every_s), tag,
+                       o.progress);
     const Attempt attempt = run_attempt(engine, run_dir, resume, *record, monitor, tag);
     const auto& early = monitor.early_stop();
     auto& meta = record->meta();
@@ -193,7 +201,7 @@ int drive(Engine& engine, const DriverOptions& o) {
       record->meta()["reason"] = e.what();
       record->write();
     }
-    return 1;
+    return dynamic_cast<const InputError*>(&e) ? 2 : 1;
   }
   std::cout << run_dir.string() << "\n";
   return o.post ? run_postprocessor(run_dir, tag) : 0;

@@ -59,9 +59,10 @@ void RunRecord::end_attempt(const Attempt& attempt) {
 void RunRecord::write() const { write_meta(run_dir_, meta_); }
 
 RunMonitor::RunMonitor(const Engine& engine, const Case& c, fs::path run_dir, RunRecord& record, StopSignals& signals,
-                       double refresh_every_model_s, std::string tag)
+                       double refresh_every_model_s, std::string tag, bool print_progress)
     : engine_(engine), case_(c), run_dir_(std::move(run_dir)), record_(record), signals_(signals),
-      refresh_every_model_s_(refresh_every_model_s), tag_(std::move(tag)), tty_(::isatty(::fileno(stderr)) != 0) {}
+      refresh_every_model_s_(refresh_every_model_s), tag_(std::move(tag)), tty_(::isatty(::fileno(stderr)) != 0),
+      print_progress_(print_progress) {}
 
 void RunMonitor::start_attempt() {
   start_ = std::chrono::steady_clock::now();
@@ -117,7 +118,7 @@ void RunMonitor::refresh(double t_s, double particle_steps) {
 // its own every 30 s, so that the log stays readable.
 void RunMonitor::print(double t_s, std::string_view detail) {
   const double elapsed = seconds_since(start_);
-  if (t_s <= t_first_s_ || (last_print_s_ >= 0 && elapsed - last_print_s_ < (tty_ ? 2.0 : 30.0))) return;
+  if (!print_progress_ || t_s <= t_first_s_ || (last_print_s_ >= 0 && elapsed - last_print_s_ < (tty_ ? 2.0 : 30.0))) return;
   last_print_s_ = elapsed;
   const double duration = case_.run.duration_s;
   const double eta = elapsed * (duration - t_s) / (t_s - t_first_s_);

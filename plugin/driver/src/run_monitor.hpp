@@ -39,7 +39,7 @@ struct EarlyStopState {
 class RunMonitor final : public Monitor {
  public:
   RunMonitor(const Engine& engine, const Case& c, std::filesystem::path run_dir, RunRecord& record,
-             StopSignals& signals, double refresh_every_model_s, std::string tag);
+             StopSignals& signals, double refresh_every_model_s, std::string tag, bool print_progress);
   void engine_process(long pid) override { signals_.engine_process(pid); }
   bool progress(double t_s, double particle_steps, std::string_view detail) override;
   StopReason stop_reason() const override;
@@ -60,6 +60,7 @@ class RunMonitor final : public Monitor {
   double refresh_every_model_s_;
   std::string tag_;
   bool tty_;
+  bool print_progress_;
   EarlyStopState early_;
   std::chrono::steady_clock::time_point start_;
   double t_first_s_ = -1, last_print_s_ = -1, last_refresh_s_ = 0, next_refresh_t_s_ = 0;

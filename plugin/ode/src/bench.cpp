@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "brash/ode/bed.hpp"
+#include "brash/run/driver.hpp"
 #include "cli.hpp"
 
 int main(int argc, char** argv) {
@@ -46,12 +47,20 @@ int main(int argc, char** argv) {
     }
     if (!o.case_dir.empty()) {
       if (o.out_dir.empty()) o.out_dir = std::filesystem::temp_directory_path() / fmt::format("bench-ode-{}", ::getpid());
-      const auto r = brash::ode::run_case(o);
-      fmt::print("bench-ode case {} ({} spheres), dt {} s, {} s simulated: {:.3g} particle-steps/s, {:.2f} s wall per "
+      brash::run::DriverOptions d;
+      d.case_path = o.case_dir;
+      d.out_dir = o.out_dir;
+      d.overrides = {o.model, o.treatment, o.duration_s};
+      d.restart_every_s = o.restart_every_s;
+      d.post = false;
+      brash::ode::OdeEngine engine(o);
+      if (const int status = brash::run::drive(engine, d); status != 0) return status;
+      const auto& r = engine.summary();
+      fmt::print("bench-ode case {}, dt {} s, {} s simulated: {:.3g} particle-steps/s, {:.2f} s wall per "
                  "simulated s (fluid {:.2f} / collide {:.2f} / quickstep {:.2f} s), mean Fx {:.4f} N; run dir {}\n",
-                 o.case_dir.string(), r.particles, o.stepper.dt_s, r.simulated_s, double(r.particle_steps) / r.loop_time_s,
+                 o.case_dir.string(), o.stepper.dt_s, r.simulated_s, double(r.particle_steps) / r.loop_time_s,
                  r.loop_time_s / r.simulated_s, r.stats.wall_fluid_s, r.stats.wall_collide_s, r.stats.wall_step_s,
-                 r.mean_fx_window_N, r.run_dir.string());
+                 r.mean_fx_window_N, o.out_dir.string());
     }
   } catch (const std::exception& e) {
     fmt::print(stderr, "bench-ode: error: {}\n", e.what());

@@ -20,6 +20,7 @@ struct DriverOptions {
   double restart_every_s = -1;           // model time between restart files; <= 0: a tenth of the run
   bool prepare_only = false;             // write the run directory's inputs and stop
   bool post = true;                      // run brash-post on a complete run
+  bool progress = true;                  // the progress line with ETA on stderr
 };
 
 // The case a run uses: the case file of options (new run) or the run directory's (resume), with the overrides.

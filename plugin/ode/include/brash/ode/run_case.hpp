@@ -1,13 +1,15 @@
-// brash-ode's case runner: case folder -> ODE scene (packing spheres, kinematic hull trimesh, side walls)
-// -> run directory in the common layout (docs/case_format.md): case.yaml, meta.json, hull_force.csv,
-// particles/, restart/ (restart_<step>.bin every restart_every_s, the last two kept; see restart.hpp), log.txt.
-// All files are written atomically. A killed run continues with resume = true (brash-ode --resume RUN_DIR).
+// brash-ode's case runner: the ODE adapter of the run driver (brash/run/engine.hpp). Case -> ODE scene (packing
+// spheres, kinematic hull trimesh, side walls) advanced in this process; restart/restart_<step>.bin every
+// restart_every_s (the last two kept; restart.hpp), and one at the very step a stop signal arrives, so that
+// `brash-ode --resume RUN_DIR` continues a killed or stopped run. The driver writes the rest of the run layout.
 #pragma once
 #include <filesystem>
+#include <memory>
 #include <string>
 
 #include "brash/ode/bed.hpp"
 #include "brash/ode/world.hpp"
+#include "brash/run/engine.hpp"
 
 namespace brash::ode {
 
@@ -22,30 +24,48 @@ struct RunOptions {
   ImplicitMode implicit_mode = ImplicitMode::EffectiveMass;
   bool end_walls = false;              // walls at x = 0 and x = length (LIGGGHTS has side walls only)
   double settle_s = 0;                 // simulated settling with the hull parked at start_x (not in t)
-  bool progress = true;                // progress line with ETA on stderr
+  bool progress = true;                // the engine's own lines on stderr (the driver prints progress)
   double overlap_tolerance_over_d = 1e-4;  // packing overlaps beyond this fraction of d_mean are errors
   double restart_every_s = 0.1;        // simulated time between restart files (0 = none)
-  // Resume the run in out_dir from its newest intact restart file: every other option is taken from the run's
-  // meta.json ("ode_options"), except progress, crash_after_step and stop_after_step.
-  bool resume = false;
   long stop_after_step = -1;           // testing: raise SIGTERM during this step (a stop request, handled)
   long crash_after_step = -1;          // testing: std::_Exit(137) right after this step (a kill -9: no cleanup)
 };
 
-struct RunResult {
-  std::filesystem::path run_dir;
-  std::size_t particles = 0;
-  long steps = 0;
-  long particle_steps = 0;
-  double wall_time_s = 0, loop_time_s = 0;
-  double simulated_s = 0;
+// The options a run was set up with, from RUN_DIR/meta.json ("ode_options"), for --resume: every option but
+// progress, crash_after_step and stop_after_step (those of `cli`). Throws InputError.
+RunOptions options_from_meta(const std::filesystem::path& run_dir, const RunOptions& cli);
+
+// What the last attempt did (bench-ode's numbers).
+struct RunSummary {
+  long steps = 0;                      // last step done
+  double simulated_s = 0;              // its model time
+  double loop_time_s = 0;              // wall time of the stepping loop
+  long particle_steps = 0;             // of the loop
   double mean_fx_window_N = 0;         // mean hull fx over the case window (clipped to the run)
-  int stopped_by_signal = 0;           // SIGINT / SIGTERM ended the run early (resumable at `steps`), else 0
   Stats stats;
 };
 
-// Throws brash::InputError for bad input (naming file and line/key) and std::runtime_error when the run fails
-// (NaN, ...); the run directory's meta.json then says status "failed" with the reason.
-RunResult run_case(const RunOptions& o);
+class OdeEngine final : public run::Engine {
+ public:
+  explicit OdeEngine(RunOptions options);
+  ~OdeEngine() override;
+  std::string name() const override { return "ode"; }
+  std::string runner() const override { return "brash-ode"; }
+  nlohmann::json meta() const override;
+  void load(const Case& c, const std::filesystem::path& case_file, const std::vector<Sphere>& spheres) override;
+  void write_scene(const std::filesystem::path&, bool) override {}  // the scene lives in this process
+  std::vector<std::string> restarts(const std::filesystem::path& run_dir) const override;
+  run::Attempt advance(const std::filesystem::path& run_dir, const std::string& restart, run::Monitor& m) override;
+  std::vector<run::ForceRow> force_record(const std::filesystem::path& run_dir, double t_max_s) const override;
+  const RunSummary& summary() const { return summary_; }
+
+  struct Scene;  // what load() reads: the case, spheres, hull mesh, guards, hull flow
+
+ private:
+  RunOptions options_;
+  std::unique_ptr<Scene> scene_;
+  std::vector<run::ForceRow> rows_;  // the record so far (as written: the early stop reads what a replay reads)
+  RunSummary summary_;
+};
 
 }  // namespace brash::ode
