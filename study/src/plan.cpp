@@ -65,8 +65,7 @@ std::vector<Command> engine_steps(Engine e, const fs::path& case_dir, const fs::
     case Engine::Liggghts:
       return {{{exe(s, "brash-liggghts-run"), case_dir, "--np", np, "--out", out, "--model", model}, {}, true, {}}};
     case Engine::Ode:
-      return {{{exe(s, "brash-ode"), case_dir, "--out", out, "--model", model, "--no-progress"}, {}, true, {}},
-              {{exe(s, "brash-post"), out}, {}, false, {}}};
+      return {{{exe(s, "brash-ode"), case_dir, "--out", out, "--model", model, "--no-progress"}, {}, true, {}}};
     case Engine::Yade:
       return {{{exe(s, "brash-yade-run"), case_dir, "--out", out, "--model", model, "-j", np}, {}, true, {}}};
   }
@@ -88,9 +87,8 @@ PlannedPaperRun plan_paper_run(const Study& study, const PaperRun& p, const Sett
                   {}, true, {}};
     if (!p.dt_s.empty()) start.argv.insert(start.argv.end(), {"--dt", p.dt_s});
     start.argv.emplace_back("--no-progress");
-    const Command post{{exe(s, "brash-post"), out}, {}, false, {}};
-    r.start = {start, post};
-    r.resume = {{{exe(s, "brash-ode"), "--resume", out, "--no-progress"}, {}, true, {}}, post};
+    r.start = {start};
+    r.resume = {{{exe(s, "brash-ode"), "--resume", out, "--no-progress"}, {}, true, {}}};
   }
   r.command_text = fmt::format("{} && {} (resumed with: {} when interrupted)", r.case_step.text,
                                shell_text(r.start, s), shell_text(r.resume, s));

@@ -2,7 +2,8 @@
 # Include arrows point down the layers of docs/architecture.md:
 #   core physics (plugin/core) and statistics (stats)
 #   <- geometry (hull_meshes) <- case and packing (common) <- engines (plugin/liggghts, ode, yade)
-#   and the postprocessor (postproc), which never include each other.
+#   and the postprocessor (postproc), which never include each other; the engines' run driver (plugin/driver) sits
+#   below the engines; the study (study/) runs engines and the postprocessor as processes and includes neither.
 # Every '#include "brash/..."' or '<brash/...>' of a component's sources must name a header of its own
 # layer or of one below it. Prints each offending line as file:line: include, exits 1 if there is one.
 set -u
@@ -18,6 +19,7 @@ owner() {
     brash/post/*) echo postproc ;;
     brash/ode/*) echo ode ;;
     brash/run/*) echo driver ;;
+    brash/study/*) echo study ;;
     brash/*) [[ -f common/include/$1 ]] && echo case || echo unknown ;;
   esac
 }
@@ -32,12 +34,13 @@ allowed() {
     plugin/liggghts|plugin/yade) echo "core stats geometry case driver" ;;
     plugin/ode) echo "core stats geometry case driver ode" ;;
     postproc) echo "core stats geometry case postproc" ;;
+    study) echo "core stats geometry case study" ;;
   esac
 }
 
 bad=0
 checked=0
-for component in plugin/core stats hull_meshes common plugin/driver plugin/liggghts plugin/ode plugin/yade postproc; do
+for component in plugin/core stats hull_meshes common plugin/driver plugin/liggghts plugin/ode plugin/yade postproc study; do
   [[ -d $component ]] || continue
   ok=" $(allowed "$component") "
   while IFS=: read -r file line text; do
