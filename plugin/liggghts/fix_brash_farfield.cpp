@@ -10,6 +10,7 @@
 #include <string>
 
 #include "atom.h"
+#include "brash/core/far_field.hpp"
 #include "error.h"
 #include "force.h"
 #include "group.h"
@@ -140,10 +141,10 @@ void FixBrashFarfield::end_of_step() {
   double** f = atom->f;
   int* mask = atom->mask;
   const int nlocal = atom->nlocal;
-  const double f2 = wake_force_ * wake_force_;
+  const brash::core::WakeRule rule = wake_rule();
   int woke = 0;
   for (int i = 0; i < nlocal; i++)
-    if ((mask[i] & idle_bit_) && f[i][0] * f[i][0] + f[i][1] * f[i][1] > f2) {
+    if ((mask[i] & idle_bit_) && brash::core::wakes(rule, f[i][0], f[i][1])) {
       mask[i] = (mask[i] | active_bit_) & ~idle_bit_;
       woke = 1;
     }
@@ -159,28 +160,21 @@ void FixBrashFarfield::end_of_step() {
 void FixBrashFarfield::update_membership(bool setup) {
   const double t = static_cast<double>(update->ntimestep) * update->dt;
   const double bow = hull_x0_ + bow_offset_ + speed_ * t, stern = hull_x0_ + stern_offset_ + speed_ * t;
-  const double x_hi = bow + ahead_, x_lo = stern - behind_;
+  const brash::core::FarFieldWindow window = brash::core::far_field_window(stern, bow, behind_, ahead_);
+  const brash::core::WakeRule rule = wake_rule();
   double** x = atom->x;
   double** v = atom->v;
   double** omega = atom->omega;
   int* mask = atom->mask;
   const int nlocal = atom->nlocal;
-  const double v2 = wake_speed_ * wake_speed_;
   double local[2] = {0, 0};  // idle, changed
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    const bool ahead = x[i][0] > x_hi, behind = x[i][0] < x_lo;
-    bool idle = ahead || behind;
-    if (idle && wake_force_ > 0) {
-      // Ahead of the bow, pieces only wake (pushed, end_of_step): once the disturbance has reached a piece it
-      // stays active (re-freezing a slow piece of a loaded bed would jam it again). At setup (a new run, or a
-      // resumed one) a piece at rest is idle. Behind the stern, a piece is idle once at rest.
-      if (ahead && !setup)
-        idle = (mask[i] & idle_bit_) != 0;
-      else
-        idle = v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2] <= v2;
-    }
+    // the rule of brash/core/far_field.hpp; at setup (a new run, or a resumed one) its first update
     const bool was_idle = (mask[i] & idle_bit_) != 0;
+    const brash::core::FarFieldZone zone = brash::core::far_field_zone(window, x[i][0], x[i][1]);
+    const brash::core::Vec3 vi(v[i][0], v[i][1], v[i][2]);
+    const bool idle = brash::core::idle_after_update(rule, zone, was_idle, setup, vi);
     if (idle) {
       mask[i] = (mask[i] | idle_bit_) & ~active_bit_;
       v[i][0] = v[i][1] = v[i][2] = 0;

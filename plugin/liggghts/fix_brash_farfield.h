@@ -22,6 +22,8 @@
    of a loaded bed would jam it again); behind the stern a piece goes idle once slower than V. At setup (new or
    resumed run) a piece outside the window is idle when slower than V. The idle ice is then the ice the
    disturbance has not reached (tests/liggghts/test_farfield.cpp: a pushed chain moves as without the fix).
+   The window, the wake test and the membership rule are brash::core's (brash/core/far_field.hpp), the same
+   that brash-ode --cull applies; this fix adds the LIGGGHTS side (groups, masks, neighbour builds, ranks).
 
    Hooks: PRE_EXCHANGE (and END_OF_STEP with wake_force). The mask bits are changed right before the
    exchange/borders of a neighbour-list build, so ghost copies carry the new bits and the same build applies the
@@ -32,6 +34,7 @@
 
 #include <string>
 
+#include "brash/core/far_field.hpp"
 #include "fix.h"
 
 namespace brash::liggghts {
@@ -49,6 +52,7 @@ class FixBrashFarfield : public LAMMPS_NS::Fix {
 
  private:
   void update_membership(bool setup);
+  brash::core::WakeRule wake_rule() const { return {wake_force_, wake_speed_}; }
 
   static constexpr int kWakeBuildSteps = 10;  // a woken piece meets its idle neighbours within this many steps
   LAMMPS_NS::bigint next_update_ = 0;

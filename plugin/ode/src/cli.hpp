@@ -35,13 +35,24 @@ inline void add_run_options(CLI::App& app, RunOptions& o, std::string& implicit_
       ->capture_default_str();
   app.add_option("--disable-angular", o.skips.disable_angular_rad_s, "auto-disable angular speed threshold [rad/s]")
       ->capture_default_str();
-  app.add_flag("--cull", o.skips.cull, "skip: freeze spheres far from the hull (static obstacles)");
+  app.add_flag("--cull", o.skips.cull,
+               "skip: freeze spheres outside a window around the hull (static obstacles) until pushed "
+               "(the far-field rule of fix brash/farfield)");
   app.add_option("--cull-ahead", o.skips.cull_ahead_m, "cull/auto-disable: active distance ahead of the bow [m]")
       ->capture_default_str();
   app.add_option("--cull-behind", o.skips.cull_behind_m, "cull/auto-disable: active distance behind the stern [m]")
       ->capture_default_str();
   app.add_option("--cull-side", o.skips.cull_side_m,
                  "cull/auto-disable: active distance beside the hull's half beam [m] (default: the whole width)");
+  app.add_option("--cull-wake-weight", o.cull_wake_force_weight,
+                 "cull: a frozen sphere wakes when the horizontal force on it exceeds this fraction of the weight of "
+                 "a piece of the mean diameter; 0 = the window alone (default: the case's "
+                 "speedups.farfield_wake_force_weight)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--cull-wake-speed", o.cull_wake_speed_m_s,
+                 "cull: behind the stern a sphere is frozen once no faster than this [m/s] (default: the case's "
+                 "speedups.farfield_wake_speed_m_s)")
+      ->check(CLI::NonNegativeNumber);
   app.add_flag("!--cull-keep-geoms", o.skips.cull_geoms,
                "cull: keep every frozen sphere in collision detection (slower, same contacts; for checking)");
   app.add_flag("--end-walls", o.end_walls, "walls at x = 0 and x = channel length (LIGGGHTS has side walls only)");

@@ -142,11 +142,23 @@ nlohmann::json options_json(const RunOptions& o) {
           {"cull_side_m", k.cull_side_m},
           {"cull_every", k.cull_every},
           {"cull_geoms", k.cull_geoms},
+          {"cull_wake_force_weight", o.cull_wake_force_weight},
+          {"cull_wake_speed_m_s", o.cull_wake_speed_m_s},
           {"implicit", o.implicit_mode == ImplicitMode::EffectiveMass ? "effective_mass" : "scale_forces"},
           {"end_walls", o.end_walls},
           {"settle_s", o.settle_s},
           {"overlap_tolerance_over_d", o.overlap_tolerance_over_d},
           {"restart_every_s", o.restart_every_s}};
+}
+
+// The skips with --cull's wake rule in SI units: the case's unless given (brash/core/far_field.hpp).
+Skips cull_skips(const RunOptions& o, const Case& c) {
+  Skips k = o.skips;
+  const double weight =
+      o.cull_wake_force_weight >= 0 ? o.cull_wake_force_weight : c.speedups.farfield_wake_force_weight;
+  k.wake_force_N = core::wake_force_N(weight, c.ice.diameter_mean_m, c.ice.density_kg_m3, c.water.gravity_m_s2);
+  k.wake_speed_m_s = o.cull_wake_speed_m_s >= 0 ? o.cull_wake_speed_m_s : c.speedups.farfield_wake_speed_m_s;
+  return k;
 }
 
 }  // namespace
@@ -189,6 +201,8 @@ RunOptions options_from_meta(const fs::path& run_dir, const RunOptions& cli) {
     o.skips.cull_side_m = j.at("cull_side_m");
     o.skips.cull_every = j.at("cull_every");
     o.skips.cull_geoms = j.value("cull_geoms", true);  // runs before the switch existed: same contacts either way
+    o.cull_wake_force_weight = j.value("cull_wake_force_weight", 0.0);  // runs before the wake: the window alone
+    o.cull_wake_speed_m_s = j.value("cull_wake_speed_m_s", 0.0);
     o.implicit_mode = j.at("implicit") == "scale_forces" ? ImplicitMode::ScaleForces : ImplicitMode::EffectiveMass;
     o.end_walls = j.at("end_walls");
     o.settle_s = j.at("settle_s");
@@ -334,7 +348,7 @@ void Stepping::log(const std::string& line) {
 
 void Stepping::build_world() {
   w_ = std::make_unique<World>(fluid_params(c_), o_.stepper, Frictions{c_.friction.ice_ice, c_.friction.ice_hull, c_.friction.ice_wall},
-                               o_.skips, o_.implicit_mode);
+                               cull_skips(o_, c_), o_.implicit_mode);
   for (const auto& p : s_.spheres) w_->add_sphere(Vec3(p.x_m, p.y_m, p.z_m), 0.5 * p.diameter_m, c_.ice.density_kg_m3);
   std::vector<double> verts;
   std::vector<dTriIndex> tris;
@@ -628,10 +642,11 @@ run::Attempt OdeEngine::advance(const fs::path& run_dir, const std::string& rest
     while (std::getline(in, line))
       if (std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf", &r.t_s, &r.fx_N, &r.fy_N, &r.fz_N) == 4) rows_.push_back(r);
   }
-  if (options_.skips.cull)  // docs/performance.md "The far field's error": measured on LIGGGHTS with the same rule
-    fmt::print(stderr, "[brash-ode] warning: --cull freezes the ice outside the window (no wake rule): the push of the "
-                       "bow cannot reach past it, which raised the mean resistance by +8 to +20 % in paired LIGGGHTS "
-                       "ensembles\n");
+  // docs/performance.md "The far field's error": measured on LIGGGHTS with the same rule
+  if (options_.skips.cull && cull_skips(options_, scene_->c).wake_force_N == 0)
+    fmt::print(stderr, "[brash-ode] warning: --cull with a wake force of 0 (the window alone): the push of the bow "
+                       "cannot reach past the window, which raised the mean resistance by +8 to +20 % in paired "
+                       "LIGGGHTS ensembles\n");
   Stepping stepping(options_, *scene_, run_dir, rows_, monitor);
   return stepping.run(resume, summary_);
 }

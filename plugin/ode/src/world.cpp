@@ -45,6 +45,8 @@ World::World(const core::FluidParams& fluid, const StepperSettings& stepper, con
   fluid_.apply_gravity = false;  // gravity is applied here, with the true mass m (ODE's world gravity would use M)
   fluid_.validate("brash-ode");
   if (!(stepper_.dt_s > 0) || !std::isfinite(stepper_.dt_s)) throw std::invalid_argument("dt must be > 0");
+  if (!(skips_.wake_force_N >= 0) || !(skips_.wake_speed_m_s >= 0))
+    throw std::invalid_argument("the cull's wake force and wake speed must be >= 0");
   world_ = dWorldCreate();
   dWorldSetGravity(world_, 0, 0, 0);
   dWorldSetERP(world_, stepper_.erp);
@@ -179,50 +181,112 @@ void World::set_damping(double linear, double angular) {
   }
 }
 
+core::FarFieldWindow World::cull_window() const {
+  const Vec3 h = hull_position();
+  core::FarFieldWindow w =
+      core::far_field_window(h.x() + hull_min_[0], h.x() + hull_max_[0], skips_.cull_behind_m, skips_.cull_ahead_m);
+  w.centre_y_m = h.y();
+  w.half_width_m = hull_half_beam() + skips_.cull_side_m;
+  return w;
+}
+
+core::WakeRule World::wake_rule() const {
+  return skips_.cull ? core::WakeRule{skips_.wake_force_N, skips_.wake_speed_m_s} : core::WakeRule{};
+}
+
+void World::freeze(SphereRec& s) {
+  s.culled = true;
+  dBodySetLinearVel(s.body, 0, 0, 0);
+  dBodySetAngularVel(s.body, 0, 0, 0);
+  dBodyDisable(s.body);
+}
+
+void World::thaw(SphereRec& s) {
+  s.culled = false;
+  s.state = {};
+  dBodyEnable(s.body);
+}
+
+// Membership (core::idle_after_update) every cull_every steps; with --auto-disable and far_only, the far
+// spheres' auto-disable flags.
 void World::update_cull() {
   if (!hull_body_ || (!skips_.cull && !(skips_.auto_disable && skips_.auto_disable_far_only))) return;
-  const Vec3 h = hull_position();
-  const double lo = h.x() + hull_min_[0] - skips_.cull_behind_m;
-  const double hi = h.x() + hull_max_[0] + skips_.cull_ahead_m;
-  const double side = hull_half_beam() + skips_.cull_side_m;
-  // Between two updates an active sphere leaves the window by at most its travel in cull_every steps (taken at
-  // up to 2 m/s, 4x the paper's ship speed); 3 diameters more keep every frozen sphere it can touch in the
-  // broad phase.
-  const double margin = 6.0 * max_radius_m_ + 2.0 * stepper_.dt_s * std::max(1, skips_.cull_every);
-  const bool cull_geoms = skips_.cull && skips_.cull_geoms;
-  std::size_t geoms_out = 0;
+  const core::FarFieldWindow window = cull_window();
+  const core::WakeRule rule = wake_rule();
+  const bool first_update = stats_.steps == 0;
   for (auto& s : spheres_) {
     if (s.retired) continue;
     const dReal* p = dBodyGetPosition(s.body);
-    const double dy = std::abs(p[1] - h.y());
-    const bool far = p[0] < lo || p[0] > hi || dy > side;
+    const core::FarFieldZone zone = core::far_field_zone(window, p[0], p[1]);
+    const bool far = zone != core::FarFieldZone::Inside;
     if (skips_.cull) {
-      if (far && !s.culled) {
-        s.culled = true;
-        dBodySetLinearVel(s.body, 0, 0, 0);
-        dBodySetAngularVel(s.body, 0, 0, 0);
-        dBodyDisable(s.body);
-      } else if (!far && s.culled) {
-        s.culled = false;
-        s.state = {};
-        dBodyEnable(s.body);
-      }
-      if (cull_geoms) {
-        const bool deep = s.culled && (p[0] < lo - margin || p[0] > hi + margin || dy > side + margin);
-        geoms_out += deep ? 1 : 0;
-        if (deep == (dGeomIsEnabled(s.geom) != 0)) {
-          if (deep) dGeomDisable(s.geom);
-          else dGeomEnable(s.geom);
-          broad_spheres_stale_ = true;
-        }
-      }
+      const dReal* v = dBodyGetLinearVel(s.body);
+      const bool idle = core::idle_after_update(rule, zone, s.culled, first_update, Vec3(v[0], v[1], v[2]));
+      if (idle && !s.culled) freeze(s);
+      else if (!idle && s.culled) thaw(s);
     }
     if (skips_.auto_disable && skips_.auto_disable_far_only) {
       dBodySetAutoDisableFlag(s.body, far ? 1 : 0);
       if (!far && !s.culled && !dBodyIsEnabled(s.body)) dBodyEnable(s.body);
     }
   }
+  if (skips_.cull) update_cull_geoms(window);
+}
+
+// Culled spheres far from every active one leave collision detection (Skips::cull_geoms). Active: the window,
+// and with the wake rule also the box of the active spheres (woken ones can be pushed beyond the window; a
+// wake refreshes this before the next step). Between two refreshes an active sphere moves by at most its travel
+// in cull_every steps (taken at up to 2 m/s, 4x the paper's ship speed); 3 diameters more keep every culled
+// sphere it can touch in the broad phase.
+void World::update_cull_geoms(const core::FarFieldWindow& w) {
+  cull_geoms_stale_ = false;
+  if (!skips_.cull_geoms) return;
+  const double margin = 6.0 * max_radius_m_ + 2.0 * stepper_.dt_s * std::max(1, skips_.cull_every);
+  double x0 = std::numeric_limits<double>::max(), y0 = x0, x1 = std::numeric_limits<double>::lowest(), y1 = x1;
+  if (wake_rule().enabled())
+    for (const auto& s : spheres_) {
+      if (s.culled || s.retired) continue;
+      const dReal* p = dBodyGetPosition(s.body);
+      x0 = std::min(x0, p[0]), x1 = std::max(x1, p[0]), y0 = std::min(y0, p[1]), y1 = std::max(y1, p[1]);
+    }
+  std::size_t geoms_out = 0;
+  for (auto& s : spheres_) {
+    if (s.retired) continue;
+    const dReal* p = dBodyGetPosition(s.body);
+    const bool near_window = !(p[0] < w.lo_x_m - margin || p[0] > w.hi_x_m + margin ||
+                               std::abs(p[1] - w.centre_y_m) > w.half_width_m + margin);
+    const bool near_active =
+        p[0] >= x0 - margin && p[0] <= x1 + margin && p[1] >= y0 - margin && p[1] <= y1 + margin;
+    const bool deep = s.culled && !near_window && !near_active;
+    geoms_out += deep ? 1 : 0;
+    if (deep == (dGeomIsEnabled(s.geom) != 0)) {
+      if (deep) dGeomDisable(s.geom);
+      else dGeomEnable(s.geom);
+      broad_spheres_stale_ = true;
+    }
+  }
   stats_.geoms_out_max = std::max(stats_.geoms_out_max, geoms_out);
+}
+
+// The wake rule's force test (core::wakes) after the step: the horizontal force of the step's contacts on each
+// culled sphere, minus the force on the active side of each of its joints. A woken sphere is stepped from the
+// next step on.
+void World::wake_pushed() {
+  const core::WakeRule rule = wake_rule();
+  for (std::size_t k = 0; k < idle_fed_.size(); ++k) {
+    SphereRec& s = spheres_[idle_fed_[k]];
+    s.push_x_N -= idle_feedback_[k].f1[0];
+    s.push_y_N -= idle_feedback_[k].f1[1];
+  }
+  for (std::size_t i : idle_fed_) {
+    SphereRec& s = spheres_[i];
+    if (s.culled && core::wakes(rule, s.push_x_N, s.push_y_N)) {
+      thaw(s);
+      ++stats_.woken;
+      cull_geoms_stale_ = true;
+    }
+    s.push_x_N = s.push_y_N = 0;
+  }
 }
 
 void World::retire(std::size_t i) {
@@ -314,7 +378,7 @@ void World::collide_tagged(dGeomID a, std::size_t ta, dGeomID b, std::size_t tb)
   const int n = dCollide(a, b, static_cast<int>(contact_buf_.size()), &contact_buf_[0].geom, sizeof(dContact));
   if (n <= 0) return;
   // A sleeping sphere touched by an awake one or by the hull wakes up (ode.md §3); a culled one stays a
-  // static obstacle (its side of the joint is the static environment, 0).
+  // static obstacle (its side of the joint is the static environment, 0) until the wake rule wakes it.
   dBodyID ba = sa.culled ? nullptr : sa.body;
   dBodyID bb = hull ? hull_body_ : (sb && !sb->culled ? sb->body : nullptr);
   if (ba && !dBodyIsEnabled(ba)) dBodyEnable(ba);
@@ -327,6 +391,9 @@ void World::collide_tagged(dGeomID a, std::size_t ta, dGeomID b, std::size_t tb)
     flip = true;
   }
   const std::size_t key = hull ? kPartnerHull : (ib ? ib - 1 : kPartnerWall + (tb - kWallTag));
+  // the wake rule reads the force on the culled sphere of an active-culled pair (wake_pushed)
+  std::size_t idle = kNoSphere;
+  if (wake_rule().enabled()) idle = flip ? ia - 1 : (sb && sb->culled ? ib - 1 : kNoSphere);
   for (int i = 0; i < n; ++i) {
     dContact& c = contact_buf_[static_cast<std::size_t>(i)];
     if (flip) {  // the normal points into g1's body: swap the geoms and reverse it
@@ -336,7 +403,7 @@ void World::collide_tagged(dGeomID a, std::size_t ta, dGeomID b, std::size_t tb)
     c.surface.mode = dContactApprox1;
     c.surface.mu = mu;
     c.surface.bounce = 0;
-    pending_.push_back(PendingContact{ia - 1, key, i, ba, bb, hull, c});
+    pending_.push_back(PendingContact{ia - 1, key, i, ba, bb, hull, c, idle});
   }
   contacts_this_step_ += static_cast<std::size_t>(n);
 }
@@ -461,6 +528,10 @@ void World::create_joints() {
     if (p.hull) {
       hull_feedback_.emplace_back();
       dJointSetFeedback(j, &hull_feedback_.back());
+    } else if (p.idle != kNoSphere) {
+      idle_feedback_.emplace_back();
+      dJointSetFeedback(j, &idle_feedback_.back());
+      idle_fed_.push_back(p.idle);
     }
   }
   pending_.clear();
@@ -469,11 +540,14 @@ void World::create_joints() {
 void World::step() {
   using clock = std::chrono::steady_clock;
   if (stats_.steps % std::max(1, skips_.cull_every) == 0) update_cull();
+  else if (cull_geoms_stale_) update_cull_geoms(cull_window());
   auto t0 = clock::now();
   apply_fluid();
   stats_.wall_fluid_s += seconds_since(t0);
   t0 = clock::now();
   hull_feedback_.clear();
+  idle_feedback_.clear();
+  idle_fed_.clear();
   contacts_this_step_ = 0;
   pending_.clear();
   if (stepper_.broad_phase == BroadPhase::Sap) dSpaceCollide(space_, this, &World::near_callback);
@@ -487,6 +561,7 @@ void World::step() {
   for (const auto& fb : hull_feedback_) f -= Vec3(fb.f1[0], fb.f1[1], fb.f1[2]);
   hull_force_N_ = f;
   hull_contacts_ = hull_feedback_.size();
+  wake_pushed();
   dJointGroupEmpty(contacts_);
   stats_.contacts_last = contacts_this_step_;
   stats_.steps += 1;
@@ -538,6 +613,7 @@ void World::save_state(restart::Writer& w) const {
 
 void World::load_state(restart::Reader& r) {
   broad_spheres_stale_ = true;
+  cull_geoms_stale_ = skips_.cull;  // geoms are not in the file: take the culled ones out again
   const auto n = r.get<std::uint64_t>();
   const auto nw = r.get<std::uint64_t>();
   const bool hull = r.get<std::uint8_t>() != 0;

@@ -21,6 +21,10 @@ struct RunOptions {
   std::string model, treatment;        // overrides of fluid.model / fluid.treatment ("" = case)
   StepperSettings stepper;             // dt default 5e-4 (the case's run.timestep_s is the DEM step)
   Skips skips;
+  // --cull's wake rule in the case file's terms, negative = the case's speedups.farfield_wake_force_weight /
+  // farfield_wake_speed_m_s (as brash-liggghts-run gives fix brash/farfield); the run sets skips' wake from them.
+  double cull_wake_force_weight = -1;
+  double cull_wake_speed_m_s = -1;
   ImplicitMode implicit_mode = ImplicitMode::EffectiveMass;
   bool end_walls = false;              // walls at x = 0 and x = length (LIGGGHTS has side walls only)
   double settle_s = 0;                 // simulated settling with the hull parked at start_x (not in t)

@@ -35,6 +35,7 @@
 #include <string>
 #include <vector>
 
+#include "brash/core/far_field.hpp"
 #include "brash/core/fluid.hpp"
 #include "brash/core/hull_flow.hpp"
 
@@ -83,11 +84,20 @@ struct Skips {
   double disable_angular_rad_s = 0.5;
   int disable_steps = 20;
   bool auto_disable_far_only = true;    // keep spheres within cull distance of the hull always awake
-  bool cull = false;                    // freeze spheres far from the hull (static obstacles)
-  double cull_ahead_m = 1.0;            // ahead of the bow (hull max x)
-  double cull_behind_m = 1.0;           // behind the stern (hull min x)
-  double cull_side_m = 1e9;             // beyond |y| of the hull's half beam + this
-  int cull_every = 20;                  // re-evaluate the culled set every n steps
+  // Cull: the far-field rule of brash/core/far_field.hpp (fix brash/farfield's in LIGGGHTS). Culled spheres are
+  // frozen (static obstacles to the active ones; no fluid force, no contact among themselves).
+  bool cull = false;
+  double cull_ahead_m = 1.0;            // window: up to this ahead of the bow (hull max x)
+  double cull_behind_m = 1.0;           // window: up to this behind the stern (hull min x)
+  double cull_side_m = 1e9;             // window: up to |y| of the hull's half beam + this
+  int cull_every = 20;                  // membership update every n steps
+  // The wake rule: a culled sphere wakes when the horizontal force of the step's contacts on it exceeds
+  // wake_force_N (read from the joints' feedback after the step); at an update a sphere ahead of the bow keeps
+  // its state, one behind the stern, beside the hull or at the first update is culled once no faster than
+  // wake_speed_m_s. wake_force_N = 0: the window alone (the culled ice is an immovable wall that jams the
+  // pushed bed, docs/performance.md). brash-ode sets both from the case's speedups.farfield_wake_*.
+  double wake_force_N = 0;
+  double wake_speed_m_s = 0;
   // Culled spheres more than 3 largest diameters inside the frozen zone also leave collision detection
   // (dGeomDisable): they can touch only other culled spheres, which give no contact, so the contacts and the
   // trajectory are the same (test_ode_restart: CullGeomsGiveTheSameRun), but the broad phase then costs the
@@ -103,6 +113,7 @@ struct Stats {
   std::size_t contacts_last = 0;
   std::size_t awake_last = 0;
   std::size_t geoms_out_max = 0;    // most culled spheres left out of collision detection at once (cull_geoms)
+  long woken = 0;                   // culled spheres woken by the wake rule's force test
 };
 
 class World {
@@ -189,6 +200,7 @@ class World {
     core::FluidOutput last;
     bool culled = false;
     bool retired = false;  // retire()
+    double push_x_N = 0, push_y_N = 0;  // wake rule: contact force on a culled sphere, summed over one step
   };
   double max_radius_m_ = 0;
   static void near_callback(void* data, dGeomID a, dGeomID b);
@@ -198,7 +210,13 @@ class World {
   void create_joints();
   static constexpr std::size_t kPartnerWall = std::size_t(1) << 40, kPartnerHull = std::size_t(1) << 41;
   void apply_fluid();
+  core::FarFieldWindow cull_window() const;
+  core::WakeRule wake_rule() const;
   void update_cull();
+  void update_cull_geoms(const core::FarFieldWindow& window);
+  void wake_pushed();
+  static void freeze(SphereRec& s);
+  static void thaw(SphereRec& s);
   void set_ode_mass(SphereRec& s, double M);
 
   core::FluidParams fluid_;
@@ -219,9 +237,15 @@ class World {
   std::vector<dTriIndex> hull_triangles_;
   std::array<double, 3> hull_min_{0, 0, 0}, hull_max_{0, 0, 0};
   std::deque<dJointFeedback> hull_feedback_;
+  // Wake rule: the feedback of this step's joints between an active sphere and a culled one, and the culled
+  // sphere of each; after a wake, the culled geoms near the woken spheres go back into collision detection.
+  std::deque<dJointFeedback> idle_feedback_;
+  std::vector<std::size_t> idle_fed_;
+  bool cull_geoms_stale_ = false;
   std::vector<dContact> contact_buf_;
   // Contacts of one step, created as joints in a fixed order (sphere index, partner) after the collision
   // pass, so the joint order does not depend on the broad phase's internal order (needed for exact restarts).
+  static constexpr std::size_t kNoSphere = std::size_t(-1);
   struct PendingContact {
     std::size_t a = 0;       // sphere index
     std::size_t key = 0;     // partner: sphere index, or kPartnerWall + wall index, or kPartnerHull
@@ -229,6 +253,7 @@ class World {
     dBodyID ba = nullptr, bb = nullptr;
     bool hull = false;
     dContact c{};
+    std::size_t idle = kNoSphere;  // the culled sphere of the pair, when the wake rule reads its force
   };
   std::vector<PendingContact> pending_;
   struct JointOrder {

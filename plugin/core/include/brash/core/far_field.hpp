@@ -1,0 +1,60 @@
+// The far-field rule, coded once for every engine that idles far ice (LIGGGHTS' fix brash/farfield,
+// brash-ode's --cull): which pieces are idle (not integrated: an immovable obstacle to active pieces) and
+// when an idle piece wakes. docs/performance.md ("far field") measures what it saves and what it costs.
+//
+// Window: with the hull moving along +x, a piece more than `ahead` ahead of the bow or more than `behind`
+// behind the stern is outside it; brash-ode can also bound it across the channel (beside the hull).
+// The window alone is not enough when the ship's push travels further than `ahead` through the ice: the idle
+// ice is then a wall that jams the pushed bed (+8 to +20 % mean resistance in paired ensembles). The wake
+// rule (wake force F > 0) lets the push through:
+//   - an idle piece wakes as soon as the horizontal force on it (from active neighbours: idle pieces get no
+//     gravity or fluid force) exceeds F;
+//   - at a membership update a piece inside the window is active; ahead of the bow a piece keeps its state
+//     (one the push has reached stays active: re-freezing slow pieces of a loaded bed would jam it again);
+//     behind the stern, beside the hull and at a run's first update a piece is idle once no faster than V.
+#pragma once
+#include <limits>
+
+#include "brash/core/params.hpp"
+
+namespace brash::core {
+
+struct FarFieldWindow {
+  double lo_x_m = 0, hi_x_m = 0;  // stern - behind, bow + ahead
+  double centre_y_m = 0;          // the hull's centre line
+  double half_width_m = std::numeric_limits<double>::infinity();  // |y - centre| beyond this: beside
+};
+
+// The window for the hull's extent along x now (stern <= bow) and the active distances behind and ahead.
+constexpr FarFieldWindow far_field_window(double stern_x_m, double bow_x_m, double behind_m, double ahead_m) {
+  FarFieldWindow w;
+  w.lo_x_m = stern_x_m - behind_m;
+  w.hi_x_m = bow_x_m + ahead_m;
+  return w;
+}
+
+enum class FarFieldZone { Inside, Ahead, Behind, Beside };
+
+// Ahead and behind take precedence over beside (their rules differ; the window is x first).
+FarFieldZone far_field_zone(const FarFieldWindow& w, double x_m, double y_m);
+
+struct WakeRule {
+  double force_N = 0;    // wake when the horizontal force exceeds this; 0: never (the window alone)
+  double speed_m_s = 0;  // where the speed decides (see above): idle once |v| <= this
+  bool enabled() const { return force_N > 0; }
+};
+
+// The case file's form (speedups.farfield_wake_force_weight): a fraction of the weight of a piece of the
+// mean diameter.
+double wake_force_N(double weight_fraction, double mean_diameter_m, double ice_density_kg_m3,
+                    double gravity_m_s2);
+
+// Does an idle piece with this horizontal force on it wake now? (|F_h| > F, never with the rule off)
+bool wakes(const WakeRule& rule, double fx_N, double fy_N);
+
+// Membership at an update: is the piece idle afterwards? `first_update`: the run's first (fix brash/farfield
+// also counts a resumed run's first; brash-ode restores the idle set exactly from its restart file).
+bool idle_after_update(const WakeRule& rule, FarFieldZone zone, bool was_idle, bool first_update,
+                       const Vec3& velocity_m_s);
+
+}  // namespace brash::core

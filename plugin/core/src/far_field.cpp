@@ -1,0 +1,35 @@
+// The far-field rule (see far_field.hpp). Squared norms: no square roots on the per-piece path.
+#include "brash/core/far_field.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace brash::core {
+
+FarFieldZone far_field_zone(const FarFieldWindow& w, double x_m, double y_m) {
+  if (x_m > w.hi_x_m) return FarFieldZone::Ahead;
+  if (x_m < w.lo_x_m) return FarFieldZone::Behind;
+  if (std::abs(y_m - w.centre_y_m) > w.half_width_m) return FarFieldZone::Beside;
+  return FarFieldZone::Inside;
+}
+
+double wake_force_N(double weight_fraction, double mean_diameter_m, double ice_density_kg_m3,
+                    double gravity_m_s2) {
+  const double d = mean_diameter_m;
+  const double weight_N = ice_density_kg_m3 * (std::numbers::pi / 6.0 * d * d * d) * gravity_m_s2;
+  return weight_fraction * weight_N;
+}
+
+bool wakes(const WakeRule& rule, double fx_N, double fy_N) {
+  return rule.enabled() && fx_N * fx_N + fy_N * fy_N > rule.force_N * rule.force_N;
+}
+
+bool idle_after_update(const WakeRule& rule, FarFieldZone zone, bool was_idle, bool first_update,
+                       const Vec3& v) {
+  if (zone == FarFieldZone::Inside) return false;
+  if (!rule.enabled()) return true;
+  if (zone == FarFieldZone::Ahead && !first_update) return was_idle;
+  return v.x() * v.x() + v.y() * v.y() + v.z() * v.z() <= rule.speed_m_s * rule.speed_m_s;
+}
+
+}  // namespace brash::core

@@ -1,0 +1,86 @@
+// The far-field rule (far_field.hpp): window, wake by force, membership at an update.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "brash/core/far_field.hpp"
+
+using namespace brash::core;
+
+namespace {
+// stern at x = 1, bow at x = 3, active 0.5 m behind and 0.25 m ahead: x in [0.5, 3.25]
+const FarFieldWindow kWindow = far_field_window(1.0, 3.0, 0.5, 0.25);
+const WakeRule kWake{0.02, 0.005};
+const Vec3 kRest = Vec3::Zero(), kSlow(0.003, 0.0, -0.0039), kFast(0.003, 0.0, 0.0041);  // |v| 0.0049, 0.0051
+}  // namespace
+
+TEST(FarFieldWindow, ZonesAlongTheChannel) {
+  EXPECT_EQ(kWindow.lo_x_m, 0.5);
+  EXPECT_EQ(kWindow.hi_x_m, 3.25);
+  EXPECT_EQ(far_field_zone(kWindow, 3.25, 0.0), FarFieldZone::Inside);  // the edges are inside
+  EXPECT_EQ(far_field_zone(kWindow, 0.5, 0.0), FarFieldZone::Inside);
+  EXPECT_EQ(far_field_zone(kWindow, 3.26, 0.0), FarFieldZone::Ahead);
+  EXPECT_EQ(far_field_zone(kWindow, 0.49, 0.0), FarFieldZone::Behind);
+  EXPECT_EQ(far_field_zone(kWindow, 2.0, 1e6), FarFieldZone::Inside);  // no bound across by default
+}
+
+TEST(FarFieldWindow, BesideTheHullWhenBoundedAcross) {
+  FarFieldWindow w = kWindow;
+  w.centre_y_m = 0.1;
+  w.half_width_m = 0.3;
+  EXPECT_EQ(far_field_zone(w, 2.0, 0.35), FarFieldZone::Inside);
+  EXPECT_EQ(far_field_zone(w, 2.0, -0.21), FarFieldZone::Beside);
+  EXPECT_EQ(far_field_zone(w, 4.0, -0.21), FarFieldZone::Ahead);  // along x first
+}
+
+TEST(WakeRule, WakesOnHorizontalForceAboveTheThreshold) {
+  EXPECT_FALSE(wakes(kWake, 0.012, 0.0159));  // |F_h| 0.01993
+  EXPECT_TRUE(wakes(kWake, 0.012, 0.0161));    // |F_h| 0.02008
+  EXPECT_FALSE(wakes(WakeRule{0.5, 0.0}, 0.5, 0.0));  // at the threshold: not above
+  EXPECT_TRUE(wakes(kWake, -0.03, 0.0));
+  EXPECT_FALSE(wakes(WakeRule{}, 100.0, 100.0));  // rule off: the window alone
+}
+
+TEST(WakeRule, ForceFromTheCasesWeightFraction) {
+  // 1e-3 of the weight of a 0.02 m sphere of 900 kg/m^3 under 9.81 m/s^2: 1e-3 * 900 * pi/6 * 8e-6 * 9.81
+  const double expected = 1e-3 * 900 * std::numbers::pi / 6 * 8e-6 * 9.81;
+  EXPECT_NEAR(wake_force_N(1e-3, 0.02, 900, 9.81), expected, 1e-15 * expected);
+  EXPECT_NEAR(wake_force_N(1e-3, 0.02, 900, 9.81), 3.6983e-5, 1e-9);
+  EXPECT_EQ(wake_force_N(0.0, 0.02, 900, 9.81), 0.0);
+}
+
+TEST(FarFieldMembership, WindowAloneIdlesEverythingOutside) {
+  const WakeRule off;
+  for (auto zone : {FarFieldZone::Ahead, FarFieldZone::Behind, FarFieldZone::Beside})
+    for (bool was_idle : {false, true}) {
+      EXPECT_TRUE(idle_after_update(off, zone, was_idle, false, kFast));
+      EXPECT_TRUE(idle_after_update(off, zone, was_idle, true, kFast));
+    }
+  EXPECT_FALSE(idle_after_update(off, FarFieldZone::Inside, true, false, kRest));
+}
+
+TEST(FarFieldMembership, InsideIsAlwaysActive) {
+  for (bool was_idle : {false, true})
+    for (bool first : {false, true})
+      EXPECT_FALSE(idle_after_update(kWake, FarFieldZone::Inside, was_idle, first, kRest));
+}
+
+TEST(FarFieldMembership, AheadKeepsItsStateAfterTheFirstUpdate) {
+  // pushed once: stays active, however slow
+  EXPECT_FALSE(idle_after_update(kWake, FarFieldZone::Ahead, false, false, kRest));
+  EXPECT_TRUE(idle_after_update(kWake, FarFieldZone::Ahead, true, false, kFast));
+  EXPECT_TRUE(idle_after_update(kWake, FarFieldZone::Ahead, false, true, kSlow));  // first update: by speed
+  EXPECT_FALSE(idle_after_update(kWake, FarFieldZone::Ahead, true, true, kFast));
+}
+
+TEST(FarFieldMembership, BehindAndBesideIdleOnceSlow) {
+  for (auto zone : {FarFieldZone::Behind, FarFieldZone::Beside})
+    for (bool was_idle : {false, true}) {
+      EXPECT_TRUE(idle_after_update(kWake, zone, was_idle, false, kSlow));
+      EXPECT_FALSE(idle_after_update(kWake, zone, was_idle, false, kFast));
+    }
+  // at the threshold speed a piece counts as slow
+  const Vec3 at_threshold(0.0, -0.25, 0.0);
+  EXPECT_TRUE(idle_after_update(WakeRule{0.5, 0.25}, FarFieldZone::Behind, false, false, at_threshold));
+}
