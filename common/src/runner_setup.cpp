@@ -7,6 +7,7 @@
 #include <iostream>
 #include <sys/wait.h>
 
+#include "brash/case_derive.hpp"
 #include "brash/error.hpp"
 
 namespace fs = std::filesystem;
@@ -36,29 +37,23 @@ int run_postprocessor(const fs::path& run_dir, const std::string& tag) {
 }
 
 Case load_case_with_overrides(const fs::path& case_file, const CaseOverrides& o, const std::string& tag) {
-  // with --model, the model checks wait for the final parse below (a hull_flow case run with --model drag)
-  Case c = load_case(case_file, o.model.empty());
-  std::string yaml = dump_case_yaml(c);
-  auto set_key = [&](const std::string& section, const std::string& key, const std::string& value) {
-    const std::string pat = "\n  " + key + ":";
-    const auto sec = yaml.find("\n" + section + ":");
-    const auto pos = sec == std::string::npos ? sec : yaml.find(pat, sec);
-    if (pos == std::string::npos) throw InputError(fmt::format("cannot override {}.{}", section, key));
-    const auto eol = yaml.find('\n', pos + 1);
-    yaml.replace(pos, eol - pos, pat + " " + value);
-  };
-  if (!o.model.empty()) set_key("fluid", "model", o.model);
-  if (!o.treatment.empty()) set_key("fluid", "treatment", o.treatment);
+  brash::CaseOverrides set;
+  if (!o.model.empty()) set.emplace_back("fluid.model", o.model);
+  if (!o.treatment.empty()) set.emplace_back("fluid.treatment", o.treatment);
   if (o.duration_s > 0) {
-    set_key("run", "duration_s", fmt::format("{}", o.duration_s));
+    set.emplace_back("run.duration_s", fmt::format("{}", o.duration_s));
+    const Case c = load_case(case_file, o.model.empty());
     if (o.duration_s < c.run.window_s[1]) {  // keep the window inside a shortened run, and say so
       const double start = std::min(c.run.window_s[0], 0.5 * o.duration_s);
-      set_key("run", "window_s", fmt::format("[{}, {}]", start, o.duration_s));
+      set.emplace_back("run.window_s", fmt::format("[{}, {}]", start, o.duration_s));
       std::cerr << fmt::format("{} --duration {} s is shorter than the window: window set to [{}, {}] s\n", tag,
                                o.duration_s, start, o.duration_s);
     }
   }
-  return parse_case(yaml, case_file.parent_path(), case_file.string() + " (with command-line overrides)");
+  if (set.empty()) return load_case(case_file);
+  // through the case library, as `brash-case derive` (validated like a case file)
+  return parse_case(derive_case(case_file, set), fs::absolute(case_file).parent_path(),
+                    case_file.string() + " (with command-line overrides)");
 }
 
 void prepare_case_inputs(const Case& c, const fs::path& case_file, const std::string& tag) {
