@@ -49,7 +49,14 @@ RunMeta read_run_meta(const std::filesystem::path& path) {
   take(j, "ranks", m.ranks, path);
   take(j, "particles", m.particles, path);
   take(j, "exits", m.exits, path);
-  if (j.contains("skips") && j["skips"].is_object()) take(j["skips"], "cull", m.culled_far_field, path);
+  if (j.contains("skips") && j["skips"].is_object()) {
+    // brash-ode --cull with the window alone (a wake force of 0, or a run from before the wake rule)
+    bool cull = false;
+    double wake_force_N = 0;
+    take(j["skips"], "cull", cull, path);
+    take(j["skips"], "cull_wake_force_N", wake_force_N, path);
+    m.culled_far_field = cull && !(wake_force_N > 0);
+  }
   if (j.contains("early_stop") && j["early_stop"].is_object()) {
     EarlyStopMeta e;
     take(j["early_stop"], "t_s", e.t_s, path);

@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -199,6 +200,9 @@ TEST_F(Restart, CullGeomsGiveTheSameRunAndResume) {
   std::printf("[cull geoms] at most %ld of 720 frozen spheres out of collision detection\n", out_max(meta_f));
   EXPECT_GT(out_max(meta_f), 20);  // the scene really had spheres deep in the frozen zone beside the hull
   EXPECT_EQ(out_max(meta_g), 0);
+  // the wake rule is on (the case's wake force), so brash-post does not flag the run as "window alone"
+  const auto skips = nlohmann::json::parse(meta_f)["skips"];
+  EXPECT_GT(skips.value("cull_wake_force_N", 0.0), 0.0) << skips.dump();
   EXPECT_EQ(slurp(f / "hull_force.csv"), slurp(g / "hull_force.csv"));
   EXPECT_EQ(slurp(f / "particles" / "particles_400.csv"), slurp(g / "particles" / "particles_400.csv"));
   EXPECT_NE(slurp(f / "hull_force.csv"), slurp(kRoot / "A" / "hull_force.csv"));  // culling did act

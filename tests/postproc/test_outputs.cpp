@@ -187,7 +187,9 @@ TEST(FarFieldNote, WindowAloneRunsAreFlagged) {
   };
   for (const auto& v : {Variant{"speedups:\n  farfield: true\n  farfield_wake_force_weight: 0\n", "", true},
                         Variant{"speedups:\n  farfield: true\n", "", false},  // the wake rule (default)
-                        Variant{"", R"(, "skips": {"cull": true})", true},    // brash-ode --cull
+                        Variant{"", R"(, "skips": {"cull": true})", true},    // brash-ode --cull before the wake
+                        Variant{"", R"(, "skips": {"cull": true, "cull_wake_force_N": 0})", true},  // window alone
+                        Variant{"", R"(, "skips": {"cull": true, "cull_wake_force_N": 0.0123})", false},  // wake rule
                         Variant{"", R"(, "skips": {"cull": false})", false}}) {
     SCOPED_TRACE(v.case_extra + v.meta_extra);
     const auto dir = scratch("farfield_note");

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "brash/case_fluid.hpp"
+#include "brash/core/far_field.hpp"
 #include "brash/guard.hpp"
 #include "icefluid_arguments.h"
 
@@ -137,9 +138,8 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
   s += fmt::format("fix mv all move/mesh mesh hull linear {:.9g} 0 0\n", c.ship.speed_m_s);
   if (sp.farfield) {
     // the wake force: a fraction of the mean piece's weight (docs/performance.md, "far field")
-    const double d = c.ice.diameter_mean_m;
-    const double weight_N = c.ice.density_kg_m3 * sphere_volume_m3(d) * c.water.gravity_m_s2;
-    const double wake_force_N = sp.farfield_wake_force_weight * weight_N;
+    const double wake_force_N = core::wake_force_N(sp.farfield_wake_force_weight, c.ice.diameter_mean_m,
+                                                   c.ice.density_kg_m3, c.water.gravity_m_s2);
     s += fmt::format(
         "fix farfield all brash/farfield every {} ahead {:.9g} behind {:.9g} hull_x0 {:.9g} speed {:.9g} "
         "bow_offset {:.9g} stern_offset {:.9g}{} active active idle idle\n",

@@ -20,7 +20,7 @@ struct RunMeta {
   std::optional<double> dt_s, wall_time_s, particle_steps;
   std::optional<long long> ranks, particles;
   long long exits = 0;  // pieces that left through the channel's open ends (fix brash/exit, World::retire)
-  bool culled_far_field = false;  // brash-ode --cull (skips.cull): spheres outside the window frozen, no wake rule
+  bool culled_far_field = false;  // brash-ode --cull with the window alone (no wake force): spheres outside frozen
   std::optional<EarlyStopMeta> early_stop;
   bool in_progress() const { return status == "running"; }
 };
