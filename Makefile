@@ -9,7 +9,7 @@ DEB_PACKAGES := g++ make cmake ninja-build pkg-config \
   libeigen3-dev nlohmann-json3-dev libcli11-dev libyaml-cpp-dev libfmt-dev \
   libgtest-dev libgmock-dev libbenchmark-dev valgrind \
   liggghts libliggghts-dev openmpi-bin libopenmpi-dev \
-  libode-dev libvtk9-dev gnuplot-nox python3-meshio python3-numpy python3-vtk9 jq \
+  libode-dev libvtk9-dev gnuplot-nox python3-meshio python3-numpy python3-pandas python3-yaml python3-vtk9 jq \
   clang libclang-rt-14-dev \
   yade pybind11-dev python3-dev
 

@@ -1,0 +1,217 @@
+"""One run directory (docs/case_format.md, "Run layout") as a Python object."""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass, field
+from functools import cached_property
+from pathlib import Path
+from typing import Any
+
+import pandas as pd
+import yaml
+
+# Every engine writes these two when a run starts; hull_force.csv follows when it ends and report.json
+# after brash-post, so a running or failed run still loads (its .force then says what is missing).
+REQUIRED_FILES = ("case.yaml", "meta.json")
+
+FORCE_FILE = "hull_force.csv"
+FORCE_COLUMNS = ("t_s", "fx_N", "fy_N", "fz_N")
+INDEX_FILE = Path("particles") / "index.csv"
+INDEX_COLUMNS = ("step", "t_s", "file", "hull_x_m")
+REPORT_FILE = "report.json"
+
+
+class RunError(Exception):
+    """A run directory, or one of its files, is not what the run layout says."""
+
+
+class NotARunError(RunError):
+    """The folder is not a run directory (a file every run has is missing)."""
+
+
+@dataclass(frozen=True)
+class Resistance:
+    """The resistance brash-post measured in the run's averaging window (report.json)."""
+
+    mean_N: float                  # model scale, mean of -fx over the window
+    ci95_N: float                  # its 95 % confidence half-width (block averaging)
+    full_kN: float | None          # full scale (Froude scaling with ship.scale_lambda)
+    full_ci95_kN: float | None
+    window_s: tuple[float, float]  # the window actually averaged
+    plateau_found: bool | None     # False: the CI is a lower bound (report.md says so)
+    fsicr_R_CH_kN: float | None    # FSICR channel resistance of the measured hull
+    ratio_fsicr_to_sim: float | None
+    notes: tuple[str, ...] = field(default_factory=tuple)
+
+    @property
+    def rel_ci95(self) -> float:
+        """ci95 / mean (inf for a zero mean)."""
+        return self.ci95_N / abs(self.mean_N) if self.mean_N else math.inf
+
+    def __str__(self) -> str:
+        text = f"{self.mean_N:.4g} ± {self.ci95_N:.2g} N model"
+        if self.full_kN is not None:
+            ci = f" ± {self.full_ci95_kN:.3g}" if self.full_ci95_kN is not None else ""
+            text += f", {self.full_kN:.4g}{ci} kN full scale"
+        return text + f" (window {self.window_s[0]:g}-{self.window_s[1]:g} s)"
+
+
+def load_run(path: str | Path) -> "Run":
+    """Open the run directory PATH; raises NotARunError naming the first missing file."""
+    return Run(path)
+
+
+def _optional_float(value: Any) -> float | None:
+    return None if value is None else float(value)
+
+
+class Run:
+    """A run directory: meta.json, case.yaml, hull_force.csv, particles/, report.json.
+
+    meta and case are read when the run is opened; force, snapshots and report on first use.
+    """
+
+    def __init__(self, path: str | Path) -> None:
+        self.path = Path(path)
+        if not self.path.exists():
+            raise NotARunError(f"{self.path}: no such run directory")
+        if not self.path.is_dir():
+            raise NotARunError(f"{self.path}: not a folder (a run directory is a folder, docs/case_format.md)")
+        for name in REQUIRED_FILES:
+            if not (self.path / name).is_file():
+                hint = ""
+                if name == "meta.json" and (self.path / "case.yaml").is_file():
+                    hint = " (a case folder? run it with an engine first: brash-ode / brash-liggghts-run)"
+                raise NotARunError(f"{self.path} is not a run directory: {self.path / name} is missing{hint}")
+        self.meta: dict = self._read_json("meta.json")
+        self.case: dict = self._read_yaml("case.yaml")
+
+    def __repr__(self) -> str:
+        return (f"<brash run {self.path} engine={self.meta.get('engine')!r} "
+                f"model={self.meta.get('fluid_model')!r} status={self.status!r}>")
+
+    # ---- small files -------------------------------------------------------------------------------
+    def _read_json(self, name: str) -> dict:
+        file = self.path / name
+        try:
+            with open(file, encoding="utf-8") as f:
+                data = json.load(f)
+        except json.JSONDecodeError as e:
+            raise RunError(f"{file}: not valid JSON (line {e.lineno}: {e.msg})") from e
+        if not isinstance(data, dict):
+            raise RunError(f"{file}: expected a JSON object, found {type(data).__name__}")
+        return data
+
+    def _read_yaml(self, name: str) -> dict:
+        file = self.path / name
+        try:
+            with open(file, encoding="utf-8") as f:
+                data = yaml.safe_load(f)
+        except yaml.YAMLError as e:
+            raise RunError(f"{file}: not valid YAML ({e})") from e
+        if not isinstance(data, dict):
+            raise RunError(f"{file}: expected a mapping of case keys, found {type(data).__name__}")
+        return data
+
+    def _read_csv(self, rel: Path | str, columns: tuple[str, ...], what: str) -> pd.DataFrame:
+        file = self.path / rel
+        if not file.is_file():
+            raise RunError(f"{file} is missing ({what}; run status {self.status!r})")
+        try:
+            df = pd.read_csv(file)
+        except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError) as e:
+            raise RunError(f"{file}: not a readable CSV ({e})") from e
+        missing = [c for c in columns if c not in df.columns]
+        if missing:
+            raise RunError(f"{file}: column(s) {', '.join(missing)} missing "
+                           f"(header {','.join(map(str, df.columns))}; expected {','.join(columns)})")
+        return df
+
+    @property
+    def status(self) -> str | None:
+        """meta.json's status: running, complete or failed."""
+        return self.meta.get("status")
+
+    @property
+    def name(self) -> str:
+        return self.path.resolve().name
+
+    # ---- hull force --------------------------------------------------------------------------------
+    @cached_property
+    def force(self) -> pd.DataFrame:
+        """hull_force.csv: t_s, fx_N, fy_N, fz_N (force of the ice on the hull) plus resistance_N = -fx_N."""
+        df = self._read_csv(FORCE_FILE, FORCE_COLUMNS,
+                            "the engine writes it when the run ends: a running or killed run has none yet")
+        for c in FORCE_COLUMNS:
+            if not pd.api.types.is_numeric_dtype(df[c]):
+                raise RunError(f"{self.path / FORCE_FILE}: column {c} is not numeric")
+        df["resistance_N"] = -df["fx_N"]
+        return df
+
+    # ---- particle snapshots ------------------------------------------------------------------------
+    @cached_property
+    def snapshots(self) -> pd.DataFrame:
+        """particles/index.csv: step, t_s, file, hull_x_m (one row per snapshot, in time order)."""
+        return self._read_csv(INDEX_FILE, INDEX_COLUMNS, "the index of the particle snapshots")
+
+    def snapshot(self, step: int | None = None, *, index: int | None = None) -> pd.DataFrame:
+        """One particle snapshot as a DataFrame (id, x, y, z, radius, vx, vy, vz, submerged_fraction, ca_*).
+
+        run.snapshot(1200) is the snapshot of step 1200; run.snapshot(index=-1) the last one. The frame's
+        attrs hold step, t_s and hull_x_m of that snapshot.
+        """
+        if (step is None) == (index is None):
+            raise TypeError("snapshot(): give a step or index=..., not both and not neither")
+        snaps = self.snapshots
+        if step is not None:
+            rows = snaps[snaps["step"] == step]
+            if rows.empty:
+                have = ", ".join(str(s) for s in snaps["step"].tolist()[:20]) or "none"
+                raise RunError(f"{self.path / INDEX_FILE}: no snapshot at step {step} (steps: {have})")
+            row = rows.iloc[0]
+        else:
+            assert index is not None
+            if not -len(snaps) <= index < len(snaps):
+                raise RunError(f"{self.path / INDEX_FILE}: snapshot index {index} out of range "
+                               f"({len(snaps)} snapshots)")
+            row = snaps.iloc[index]
+        df = self._read_csv(Path("particles") / str(row["file"]), ("id", "x", "y", "z", "radius"),
+                            f"listed in {INDEX_FILE} for step {int(row['step'])}")
+        df.attrs.update(step=int(row["step"]), t_s=float(row["t_s"]), hull_x_m=float(row["hull_x_m"]))
+        return df
+
+    # ---- brash-post's report -----------------------------------------------------------------------
+    @cached_property
+    def report(self) -> dict | None:
+        """report.json as a dict, or None when brash-post has not run on this directory yet."""
+        if not (self.path / REPORT_FILE).is_file():
+            return None
+        return self._read_json(REPORT_FILE)
+
+    def resistance(self) -> Resistance:
+        """Mean resistance and its 95 % CI at model and full scale, from report.json."""
+        rep = self.report
+        if rep is None:
+            raise RunError(f"{self.path / REPORT_FILE} is missing: run `brash-post {self.path}` first")
+        file = self.path / REPORT_FILE
+        model = rep.get("resistance_model_N")
+        if not isinstance(model, dict) or model.get("mean") is None or model.get("ci95") is None:
+            raise RunError(f"{file}: no resistance_model_N.mean / ci95 (status {rep.get('status')!r}; "
+                           f"notes: {'; '.join(rep.get('notes', [])) or 'none'})")
+        window = rep.get("window_s")
+        if not (isinstance(window, list) and len(window) == 2):
+            raise RunError(f"{file}: window_s is not a [start, end] pair: {window!r}")
+        fsicr = rep.get("fsicr") or {}
+        return Resistance(
+            mean_N=float(model["mean"]),
+            ci95_N=float(model["ci95"]),
+            full_kN=_optional_float(rep.get("resistance_full_kN")),
+            full_ci95_kN=_optional_float(rep.get("resistance_full_ci95_kN")),
+            window_s=(float(window[0]), float(window[1])),
+            plateau_found=(model.get("blocking") or {}).get("plateau_found"),
+            fsicr_R_CH_kN=_optional_float(fsicr.get("R_CH_kN")),
+            ratio_fsicr_to_sim=_optional_float(rep.get("ratio_fsicr_to_sim")),
+            notes=tuple(rep.get("notes", [])),
+        )

@@ -1,0 +1,160 @@
+"""brash.load_run on a run directory this test writes itself (known values in every file)."""
+
+import json
+import tempfile
+import unittest
+from pathlib import Path
+
+import brash
+
+CASE_YAML = """\
+name: synthetic
+hull:
+  file: box.stl
+  draft_m: 0.4
+  lpp_m: 7.0
+ship:
+  speed_m_s: 0.5
+  scale_lambda: 25.0
+run:
+  window_s: [0.2, 0.4]
+"""
+
+META = {"engine": "ode", "fluid_model": "drag", "status": "complete", "particles": 3}
+
+REPORT = {
+    "status": "complete",
+    "window_s": [0.2, 0.4],
+    "resistance_model_N": {"mean": 2.5, "ci95": 0.25, "blocking": {"plateau_found": True}},
+    "resistance_full_kN": 195.3,
+    "resistance_full_ci95_kN": 19.5,
+    "fsicr": {"R_CH_kN": 1000.0},
+    "ratio_fsicr_to_sim": 5.12,
+    "notes": ["a note"],
+}
+
+
+def write_run(root: Path) -> Path:
+    run = root / "run"
+    (run / "particles").mkdir(parents=True)
+    (run / "case.yaml").write_text(CASE_YAML)
+    (run / "meta.json").write_text(json.dumps(META))
+    rows = ["t_s,fx_N,fy_N,fz_N"] + [f"{0.1 * i:.1f},{-1.0 * i},{0.5},{-0.25 * i}" for i in range(1, 5)]
+    (run / "hull_force.csv").write_text("\n".join(rows) + "\n")
+    (run / "particles" / "index.csv").write_text(
+        "step,t_s,file,hull_x_m\n0,0,particles_0.csv,-7.5\n100,0.4,particles_100.csv,-7.3\n")
+    header = "id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z\n"
+    (run / "particles" / "particles_0.csv").write_text(
+        header + "".join(f"{i},{0.1 * i},0,-0.01,0.02,0,0,0,1,0,0,0\n" for i in range(1, 4)))
+    (run / "particles" / "particles_100.csv").write_text(
+        header + "".join(f"{i},{0.1 * i + 0.05},0,-0.01,0.02,0.1,0,0,1,0,0,0\n" for i in range(1, 3)))
+    return run
+
+
+class LoadRun(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.root = Path(self.tmp.name)
+        self.run_dir = write_run(self.root)
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_meta_and_case(self):
+        run = brash.load_run(self.run_dir)
+        self.assertEqual(run.meta["engine"], "ode")
+        self.assertEqual(run.status, "complete")
+        self.assertEqual(run.case["hull"]["lpp_m"], 7.0)
+        self.assertEqual(run.case["run"]["window_s"], [0.2, 0.4])
+        self.assertIn("status='complete'", repr(run))
+
+    def test_force_has_resistance_column(self):
+        force = brash.load_run(str(self.run_dir)).force
+        self.assertEqual(list(force.columns), ["t_s", "fx_N", "fy_N", "fz_N", "resistance_N"])
+        self.assertEqual(len(force), 4)
+        self.assertEqual(force["resistance_N"].tolist(), [1.0, 2.0, 3.0, 4.0])
+        self.assertAlmostEqual(force["t_s"].iloc[-1], 0.4)
+
+    def test_snapshots_by_step_and_index(self):
+        run = brash.load_run(self.run_dir)
+        self.assertEqual(run.snapshots["step"].tolist(), [0, 100])
+        first = run.snapshot(0)
+        self.assertEqual(len(first), 3)
+        self.assertAlmostEqual(first["x"].iloc[2], 0.3)
+        self.assertEqual(first.attrs["step"], 0)
+        last = run.snapshot(index=-1)
+        self.assertEqual(len(last), 2)
+        self.assertEqual(last.attrs["step"], 100)
+        self.assertAlmostEqual(last.attrs["t_s"], 0.4)
+        self.assertAlmostEqual(last.attrs["hull_x_m"], -7.3)
+        self.assertAlmostEqual(last["vx"].iloc[0], 0.1)
+
+    def test_snapshot_errors(self):
+        run = brash.load_run(self.run_dir)
+        with self.assertRaisesRegex(brash.RunError, r"no snapshot at step 7 \(steps: 0, 100\)"):
+            run.snapshot(7)
+        with self.assertRaisesRegex(brash.RunError, "index 2 out of range"):
+            run.snapshot(index=2)
+        with self.assertRaises(TypeError):
+            run.snapshot()
+        (self.run_dir / "particles" / "particles_100.csv").unlink()
+        with self.assertRaisesRegex(brash.RunError, r"particles_100\.csv is missing"):
+            run.snapshot(100)
+
+    def test_report_before_and_after_post(self):
+        run = brash.load_run(self.run_dir)
+        self.assertIsNone(run.report)
+        with self.assertRaisesRegex(brash.RunError, r"report\.json is missing: run `brash-post"):
+            run.resistance()
+        (self.run_dir / "report.json").write_text(json.dumps(REPORT))
+        run = brash.load_run(self.run_dir)
+        self.assertEqual(run.report["status"], "complete")
+        r = run.resistance()
+        self.assertEqual((r.mean_N, r.ci95_N), (2.5, 0.25))
+        self.assertEqual((r.full_kN, r.full_ci95_kN), (195.3, 19.5))
+        self.assertEqual(r.window_s, (0.2, 0.4))
+        self.assertTrue(r.plateau_found)
+        self.assertEqual(r.fsicr_R_CH_kN, 1000.0)
+        self.assertAlmostEqual(r.rel_ci95, 0.1)
+        self.assertEqual(r.notes, ("a note",))
+        self.assertIn("2.5 ± 0.25 N model, 195.3 ± 19.5 kN full scale", str(r))
+
+    def test_report_without_resistance(self):
+        (self.run_dir / "report.json").write_text(json.dumps({"status": "failed", "notes": ["guard stop"]}))
+        with self.assertRaisesRegex(brash.RunError, r"no resistance_model_N.*'failed'.*guard stop"):
+            brash.load_run(self.run_dir).resistance()
+
+    def test_not_a_run_directory_names_the_missing_file(self):
+        empty = self.root / "empty"
+        empty.mkdir()
+        with self.assertRaisesRegex(brash.NotARunError, r"empty is not a run directory: .*empty/case\.yaml is missing"):
+            brash.load_run(empty)
+        (empty / "case.yaml").write_text(CASE_YAML)
+        with self.assertRaisesRegex(brash.NotARunError, r"meta\.json is missing \(a case folder\?"):
+            brash.load_run(empty)
+        with self.assertRaisesRegex(brash.NotARunError, "no such run directory"):
+            brash.load_run(self.root / "nowhere")
+        with self.assertRaisesRegex(brash.NotARunError, "not a folder"):
+            brash.load_run(self.run_dir / "meta.json")
+
+    def test_missing_or_bad_force_file(self):
+        (self.run_dir / "hull_force.csv").unlink()
+        run = brash.load_run(self.run_dir)  # a running run: meta and case still load
+        with self.assertRaisesRegex(brash.RunError, r"hull_force\.csv is missing .*status 'complete'"):
+            run.force
+        (self.run_dir / "hull_force.csv").write_text("t_s,fx_N,fz_N\n0.1,1,2\n")
+        with self.assertRaisesRegex(brash.RunError, r"column\(s\) fy_N missing"):
+            brash.load_run(self.run_dir).force
+
+    def test_bad_meta_and_case(self):
+        (self.run_dir / "meta.json").write_text("{\"engine\": ")
+        with self.assertRaisesRegex(brash.RunError, r"meta\.json: not valid JSON"):
+            brash.load_run(self.run_dir)
+        (self.run_dir / "meta.json").write_text(json.dumps(META))
+        (self.run_dir / "case.yaml").write_text("- a list\n")
+        with self.assertRaisesRegex(brash.RunError, r"case\.yaml: expected a mapping"):
+            brash.load_run(self.run_dir)
+
+
+if __name__ == "__main__":
+    unittest.main()
