@@ -1,8 +1,9 @@
-// hull_force.csv reader.
+// Readers of the hull force record: hull_force.csv and a fix ave/time file (hull_force.raw).
 #include <brash/post/force_history.hpp>
 
 #include <algorithm>
 #include <array>
+#include <sstream>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -12,23 +13,78 @@
 
 namespace brash::post {
 
+namespace {
+
+// Appends one row; time must increase.
+void append_row(ForceHistory& h, const std::filesystem::path& path, std::size_t line, const std::array<double, 4>& v) {
+  if (!h.t_s.empty() && !(v[0] > h.t_s.back()))
+    throw InputError(fmt::format("{}:{}: time {} s does not increase (previous {} s)", path.string(), line, v[0],
+                                 h.t_s.back()));
+  h.t_s.push_back(v[0]);
+  h.fx_N.push_back(v[1]);
+  h.fy_N.push_back(v[2]);
+  h.fz_N.push_back(v[3]);
+}
+
+// The whitespace-separated fields of one line.
+std::vector<std::string> split_fields(const std::string& line) {
+  std::istringstream ss(line);
+  std::vector<std::string> fields;
+  for (std::string f; ss >> f;) fields.push_back(f);
+  return fields;
+}
+
+}  // namespace
+
 ForceHistory read_force_history(const std::filesystem::path& path, bool run_in_progress) {
   static constexpr std::array<std::string_view, 4> kHeader{"t_s", "fx_N", "fy_N", "fz_N"};
   const auto text = read_text_file(path);
   ForceHistory h;
   const auto scan = scan_csv(path, text, kHeader, run_in_progress,
                              [&](std::size_t line, std::span<const std::string_view> f) {
-    const double t = parse_finite(f[0], path, line, kHeader[0]);
-    if (!h.t_s.empty() && !(t > h.t_s.back()))
-      throw InputError(fmt::format("{}:{}: time {} s does not increase (previous {} s)", path.string(),
-                                   line, t, h.t_s.back()));
-    h.t_s.push_back(t);
-    h.fx_N.push_back(parse_finite(f[1], path, line, kHeader[1]));
-    h.fy_N.push_back(parse_finite(f[2], path, line, kHeader[2]));
-    h.fz_N.push_back(parse_finite(f[3], path, line, kHeader[3]));
+    std::array<double, 4> v{};
+    for (std::size_t k = 0; k < 4; ++k) v[k] = parse_finite(f[k], path, line, kHeader[k]);
+    append_row(h, path, line, v);
   });
   h.tail_dropped = scan.tail_dropped;
   return h;
+}
+
+ForceHistory read_ave_time_force_history(const std::filesystem::path& path, bool run_in_progress) {
+  static constexpr std::array<std::string_view, 5> kColumns{"TimeStep", "t", "fx", "fy", "fz"};
+  const auto text = read_text_file(path);
+  ForceHistory h;
+  std::istringstream in(text);
+  std::string line;
+  for (std::size_t no = 1; std::getline(in, line); ++no) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const auto fields = split_fields(line);
+    if (fields.empty() || fields[0][0] == '#') continue;
+    if (run_in_progress && in.eof() && !text.empty() && text.back() != '\n') {
+      h.tail_dropped = true;  // the engine is still writing this line
+      break;
+    }
+    if (fields.size() != kColumns.size())
+      throw InputError(fmt::format("{}:{}: expected {} columns (fix ave/time: TimeStep t fx fy fz), got {}",
+                                   path.string(), no, kColumns.size(), fields.size()));
+    std::array<double, 4> v{};
+    for (std::size_t k = 1; k < kColumns.size(); ++k) v[k - 1] = parse_finite(fields[k], path, no, kColumns[k]);
+    append_row(h, path, no, v);
+  }
+  return h;
+}
+
+std::filesystem::path force_record_file(const std::filesystem::path& run_dir) {
+  for (const char* name : {"hull_force.csv", "hull_force.raw"})
+    if (std::filesystem::exists(run_dir / name)) return run_dir / name;
+  throw InputError(fmt::format("{}: no hull force record: hull_force.csv (header t_s,fx_N,fy_N,fz_N) or hull_force.raw "
+                               "(LIGGGHTS fix ave/time: TimeStep t fx fy fz) is needed (docs/case_format.md)",
+                               run_dir.string()));
+}
+
+ForceHistory read_force_record(const std::filesystem::path& file, bool run_in_progress) {
+  return file.extension() == ".raw" ? read_ave_time_force_history(file, run_in_progress)
+                                    : read_force_history(file, run_in_progress);
 }
 
 std::vector<RecordGap> record_gaps(const std::vector<double>& t_s, double t0, double t1) {

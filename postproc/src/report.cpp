@@ -134,10 +134,18 @@ FsicrSummary resolve_fsicr(const PostCase& c, const std::optional<FsicrParams>& 
 RunAnalysis analyze_run(const std::filesystem::path& run_dir) {
   RunAnalysis a;
   a.run_dir = run_dir;
-  a.meta = read_run_meta(run_dir / "meta.json");
+  const bool has_meta = std::filesystem::exists(run_dir / "meta.json");
+  if (has_meta) a.meta = read_run_meta(run_dir / "meta.json");
   a.case_ = read_post_case(run_dir / "case.yaml");
-  const auto force_path = run_dir / "hull_force.csv";
-  a.force = read_force_history(force_path, a.meta.in_progress());
+  const auto force_path = force_record_file(run_dir);
+  a.force = read_force_record(force_path, a.meta.in_progress());
+  if (!has_meta)
+    a.notes.push_back("no meta.json (a run made without a brash runner): engine, run status and cost are unknown, the "
+                      "fluid model is the case's, and the record is taken as it stands: nothing says whether the run "
+                      "finished (docs/case_format.md, \"A run from your own input\")");
+  if (force_path.filename() != "hull_force.csv")
+    a.notes.push_back(fmt::format("hull force read from {} (fix ave/time: TimeStep t fx fy fz)",
+                                  force_path.filename().string()));
 
   if (a.meta.in_progress())
     a.notes.push_back("run still in progress (meta.json status 'running'): every number is provisional");

@@ -1,6 +1,7 @@
 // brash-post on synthetic run directories: report.json values, bad input, runs still being written.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -328,6 +329,41 @@ TEST(RunDir, BadForceCsvNamesFileAndLine) {
   // CLI: exit status 2 and the message on stderr.
   const auto cmd = fmt::format("{} {} > /dev/null 2>&1", BRASH_POST_EXE, dir.string());
   EXPECT_EQ(WEXITSTATUS(std::system(cmd.c_str())), 2);
+  fs::remove_all(dir);
+}
+
+// A run from a user's own LIGGGHTS input (docs/case_format.md, "A run from your own input"): case.yaml and the
+// fix ave/time file hull_force.raw, no meta.json. Same numbers as the CSV record; notes say what is unknown.
+TEST(RunDir, RunWithoutMetaReadsTheAveTimeRecord) {
+  const auto dir = scratch("ave_time");
+  SyntheticRun r;
+  write_synthetic_run(dir, r);
+  const auto from_csv = analyze_run(dir);
+  fs::remove(dir / "meta.json");
+  fs::remove(dir / "hull_force.csv");
+  std::string raw = "# Time-averaged data for fix hf\n# TimeStep v_t f_hull[1] f_hull[2] f_hull[3]\n";
+  for (std::size_t i = 0; i < r.t_s.size(); ++i)
+    raw += fmt::format("{} {} {} {} {}\n", 200 * i, r.t_s[i], r.fx_N[i], r.fy_N_series[i], r.fz_N_series[i]);
+  brash::post::testing::write_text(dir / "hull_force.raw", raw);
+  const auto a = analyze_run(dir);
+  EXPECT_EQ(a.force.t_s.size(), r.t_s.size());
+  EXPECT_NEAR(a.resistance.mean, from_csv.resistance.mean, 1e-9);
+  EXPECT_EQ(a.meta.status, "unknown");
+  EXPECT_EQ(run_fluid_model(a), "added_mass");  // the case's
+  auto has_note = [&](const std::string& part) {
+    return std::any_of(a.notes.begin(), a.notes.end(), [&](const auto& n) { return n.find(part) != std::string::npos; });
+  };
+  EXPECT_TRUE(has_note("no meta.json"));
+  EXPECT_TRUE(has_note("hull_force.raw"));
+  const auto j = run_cli(dir);
+  EXPECT_FALSE(j["complete"].get<bool>());
+
+  replace_line(dir / "hull_force.raw", 12, "1800 0.09 1 2");
+  expect_input_error(dir, {"hull_force.raw:12:", "expected 5 columns", "got 4"});
+  replace_line(dir / "hull_force.raw", 12, "1800 0.09 1 x 2");
+  expect_input_error(dir, {"hull_force.raw:12:", "fy", "'x' is not a number"});
+  fs::remove(dir / "hull_force.raw");
+  expect_input_error(dir, {"no hull force record", "hull_force.csv", "hull_force.raw"});
   fs::remove_all(dir);
 }
 

@@ -1,4 +1,5 @@
-// hull_force.csv: force of the ice on the hull (contacts only), header t_s,fx_N,fy_N,fz_N.
+// The force of the ice on the hull (contacts only): hull_force.csv (header t_s,fx_N,fy_N,fz_N) or, in a run made
+// from a user's own LIGGGHTS input, hull_force.raw as LIGGGHTS' fix ave/time writes it (docs/case_format.md).
 #pragma once
 #include <filesystem>
 #include <vector>
@@ -13,6 +14,16 @@ struct ForceHistory {
 // Strict reader: bad numbers, wrong column count, NaN/inf, non-increasing time -> InputError naming
 // file and line. `run_in_progress`: drop an unterminated last line instead of parsing it.
 ForceHistory read_force_history(const std::filesystem::path& path, bool run_in_progress);
+
+// A fix ave/time file: '#' comment lines, then rows "TimeStep t fx fy fz" (whitespace-separated; e.g.
+// `fix hf all ave/time 100 1 100 v_t f_hull[1] f_hull[2] f_hull[3] file hull_force.raw`). Same checks as
+// read_force_history, messages naming file and line.
+ForceHistory read_ave_time_force_history(const std::filesystem::path& path, bool run_in_progress);
+
+// The run directory's force record: hull_force.csv, else hull_force.raw; InputError naming both when neither exists.
+std::filesystem::path force_record_file(const std::filesystem::path& run_dir);
+// read_force_history or read_ave_time_force_history by the file's name (hull_force.raw: fix ave/time).
+ForceHistory read_force_record(const std::filesystem::path& file, bool run_in_progress);
 
 // A stretch of model time with no record: two consecutive rows further apart than kGapFactor x the record's
 // median row interval (e.g. the rows of a lost attempt of a resumed run).
