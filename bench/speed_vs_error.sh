@@ -63,10 +63,17 @@ if [ -z "${TABLE_ONLY:-}" ]; then
   done
 fi
 
+# each knob against the reference: relative difference and combined 95 % CI (brash-post difference, stats/)
+for k in "${knobs[@]}"; do
+  name="${k%%:*}"
+  [ -f "$out/reference/report.json" ] && [ -f "$out/$name/report.json" ] &&
+    "$bin/brash-post" difference "$out/reference" "$out/$name" > "$out/$name/difference.json"
+done
+
 echo
 echo "== speed vs error: $(basename "$case_dir"), $np rank(s), results in $out"
 python3 - "$out" "${knobs[@]}" <<'PY'
-import json, sys, os, math
+import json, sys, os
 out, knobs = sys.argv[1], sys.argv[2:]
 def load(name):
     try:
@@ -87,9 +94,11 @@ for k in knobs:
         print('| %s | %s | | failed or missing | | | | | |' % (name, edits or 'all off')); continue
     sp = ref['wall'] / r['wall'] if ref else float('nan')
     tput = r['ps'] / r['loop'] if r['loop'] else float('nan')
-    err = 100 * (r['mean'] - ref['mean']) / ref['mean'] if ref else float('nan')
-    cci = 100 * math.hypot(r['ci'], ref['ci']) / ref['mean'] if ref else float('nan')
-    sig = '' if abs(err) <= cci else ' (outside CI)'
+    try:
+        d = json.load(open(os.path.join(out, name, 'difference.json')))
+        err, cci, sig = 100 * d['diff_rel'], 100 * d['ci95_rel'], ' (outside CI)' if d['resolved'] else ''
+    except (OSError, ValueError):
+        err, cci, sig = float('nan'), float('nan'), ''
     print('| %s | %s | %d | %.0f | %.2fx | %.3g | %.2f ± %.2f | %+.1f %%%s | ± %.1f %% |' % (
         name, edits.replace(',', ', ') or 'all off', r['n'], r['wall'], sp, tput, r['mean'], r['ci'], err, sig, cci))
 PY

@@ -3,11 +3,25 @@
 instantaneous sample every `thermo` steps, against the run's hull_force.csv (means over 0.01 s) on stretches
 of model time: a check of a record with a gap, and an estimate of the resistance there.
     python3 bench/thermo_force.py RUN_DIR T0-T1 [T0-T1 ...]
-Per stretch: thermo samples (n, mean resistance -fx, its standard error assuming independent samples) and
-the record's rows (n, mean). A thermo sample repeated by a resumed attempt (same t) is counted once."""
-import math
+Per stretch: thermo samples (n, mean resistance -fx, its standard error assuming independent samples, from
+`brash-post sample-stats`: BRASH_BIN, default build/bin) and the record's rows (n, mean). A thermo sample repeated
+by a resumed attempt (same t) is counted once."""
+import json
+import os
 import re
+import subprocess
 import sys
+
+
+def sample_stats(values):
+    """n, mean and standard error of independent samples, by the project's statistics (brash-post sample-stats)."""
+    if len(values) < 2:
+        return len(values), float("nan"), float("nan")
+    exe = os.path.join(os.environ.get("BRASH_BIN", "build/bin"), "brash-post")
+    out = subprocess.run([exe, "sample-stats", "-"], input="\n".join(repr(v) for v in values), text=True,
+                         capture_output=True, check=True).stdout
+    s = json.loads(out)
+    return s["n"], s["mean"], s["se"]
 
 
 def main():
@@ -32,9 +46,7 @@ def main():
         a, b = map(float, span.split("-"))
         ts = [-fx for t, fx in thermo.items() if a < t <= b]
         rs = [-fx for t, fx in record if a < t <= b]
-        n = len(ts)
-        mean = sum(ts) / n if n else float("nan")
-        se = math.sqrt(sum((x - mean) ** 2 for x in ts) / (n - 1) / n) if n > 1 else float("nan")
+        n, mean, se = sample_stats(ts)
         rmean = f"{sum(rs) / len(rs):.3f}" if rs else "—"
         print(f"| {a:g}-{b:g} | {n} | {mean:.3f} | {se:.3f} | {len(rs)} | {rmean} |")
 

@@ -1,8 +1,11 @@
 // brash-post: postprocess a run directory (report, plots, ParaView files), print FSICR R_CH for
 // given parameters, compare runs, replay the early stop or summarize a paired-seed ensemble. Thin CLI over brash_post.
+#include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <string_view>
 
@@ -12,6 +15,7 @@
 #include <brash/error.hpp>
 #include <brash/run_layout.hpp>
 #include <brash/stats/early_stop.hpp>
+#include <brash/stats/paired.hpp>
 #include <brash/post/ensemble.hpp>
 #include <brash/post/fsicr.hpp>
 #include <brash/post/particles.hpp>
@@ -193,6 +197,58 @@ int run_paired_ensemble(const EnsembleSpec& spec) {
   return 0;
 }
 
+// A run's model-scale resistance from its report.json: (mean, ci95) [N].
+std::pair<double, double> report_resistance(const fs::path& run_dir) {
+  const fs::path file = run_dir / "report.json";
+  const auto j = nlohmann::json::parse(std::ifstream(file), nullptr, false);
+  if (j.is_discarded() || !j.contains("resistance_model_N"))
+    throw brash::InputError(file.string() + ": no report (run brash-post " + run_dir.string() + " first)");
+  const auto& r = j["resistance_model_N"];
+  const double nan = std::numeric_limits<double>::quiet_NaN();  // (a float NAN default would read floats)
+  return {r.value("mean", nan), r.value("ci95", nan)};
+}
+
+// Two separate runs' resistance (brash::stats::independent_relative_difference): JSON on stdout.
+int run_difference(const fs::path& reference_run, const fs::path& run) {
+  const auto [ref, ref_ci] = report_resistance(reference_run);
+  const auto [mean, ci] = report_resistance(run);
+  const auto d = brash::stats::independent_relative_difference(ref, ref_ci, mean, ci);
+  const nlohmann::json out = {{"reference_N", ref}, {"reference_ci95_N", ref_ci}, {"mean_N", mean},
+                              {"ci95_N", ci},        {"diff_rel", d.relative},   {"ci95_rel", d.ci95_relative},
+                              {"resolved", d.resolved()}};
+  fmt::print("{}\n", out.dump());
+  return 0;
+}
+
+// Mean, standard deviation, standard error and Student-t 95 % CI of numbers (whitespace separated) in a file or
+// on stdin ("-"), assuming independent samples: JSON on stdout.
+int run_sample_stats(const std::string& source) {
+  std::ifstream file;
+  if (source != "-") {
+    file.open(source);
+    if (!file) throw brash::InputError(source + ": cannot be read");
+  }
+  std::istream& in = source == "-" ? std::cin : file;
+  std::vector<double> x;
+  for (std::string word; in >> word;) {
+    std::size_t used = 0;
+    double v = NAN;
+    try {
+      v = std::stod(word, &used);
+    } catch (const std::exception&) {
+    }
+    if (used != word.size() || !std::isfinite(v))
+      throw brash::InputError(fmt::format("{}: '{}' (value {}) is not a finite number", source, word, x.size() + 1));
+    x.push_back(v);
+  }
+  if (x.size() < 2) throw brash::InputError(fmt::format("{}: {} number(s); at least 2 are needed", source, x.size()));
+  const auto m = brash::stats::mean_ci95(x);
+  const nlohmann::json out = {{"n", m.n}, {"mean", m.mean}, {"sd", m.sd}, {"se", m.sd / std::sqrt(double(m.n))},
+                              {"ci95", m.ci95}};
+  fmt::print("{}\n", out.dump());
+  return 0;
+}
+
 #ifdef BRASH_POST_HAVE_STABILITY
 // Stability verdict and measures of one run (docs/stability.md, "Engine stability map"): JSON on stdout and
 // in OUT (default RUN_DIR/stability.json).
@@ -276,6 +332,20 @@ int main(int argc, char** argv) {
   ensemble->add_option("--label-b", espec.b.label, "side B as the table prints it");
   ensemble->add_option("--tol-pct", tol_pct, "tolerance the CI is tested against [%]")->capture_default_str();
 
+  auto* difference = app.add_subcommand(
+      "difference", "two separate runs' resistance: relative difference to the reference with the combined 95 % CI "
+                    "(JSON)");
+  fs::path diff_ref, diff_run;
+  difference->add_option("REFERENCE_RUN", diff_ref, "run directory of the reference (with report.json)")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  difference->add_option("RUN_DIR", diff_run, "run directory compared with it")->required()->check(CLI::ExistingDirectory);
+
+  auto* sample = app.add_subcommand(
+      "sample-stats", "mean, sd, standard error and Student-t 95 % CI of independent samples (JSON)");
+  std::string sample_source = "-";
+  sample->add_option("FILE", sample_source, "numbers separated by white space; - for stdin")->capture_default_str();
+
 #ifdef BRASH_POST_HAVE_STABILITY
   auto* stability = app.add_subcommand(
       "stability",
@@ -303,6 +373,8 @@ int main(int argc, char** argv) {
     if (fsicr->parsed()) return run_fsicr(p, ice_class);
     if (compare->parsed()) return run_compare(compare_runs, compare_out);
     if (early->parsed()) return run_early_stop(early_run, early_rel, early_every, !early_no_trend);
+    if (difference->parsed()) return run_difference(diff_ref, diff_run);
+    if (sample->parsed()) return run_sample_stats(sample_source);
     if (ensemble->parsed()) {
       espec.tol = tol_pct / 100;
       return run_paired_ensemble(espec);

@@ -32,6 +32,13 @@ MeanCi mean_ci95(std::span<const double> x) {
 
 double relative_difference(double a, double b) { return (b - a) / (0.5 * (a + b)); }
 
+IndependentDifference independent_relative_difference(double reference, double reference_ci95, double mean,
+                                                      double ci95) {
+  if (reference == 0 || !std::isfinite(reference))
+    throw std::invalid_argument("independent_relative_difference: the reference must be finite and non-zero");
+  return {(mean - reference) / reference, std::hypot(reference_ci95, ci95) / std::abs(reference)};
+}
+
 PairedDifference paired_relative_difference(std::span<const double> a, std::span<const double> b) {
   if (a.size() != b.size()) throw std::invalid_argument("paired_relative_difference: sides differ in length");
   if (a.size() < 2) throw std::invalid_argument("paired_relative_difference: needs at least 2 pairs");

@@ -2,6 +2,8 @@
 // and the compare command.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 
@@ -208,4 +210,57 @@ TEST(FarFieldNote, WindowAloneRunsAreFlagged) {
     EXPECT_EQ(j["notes"].dump().find("window alone") != std::string::npos, v.flagged) << j["notes"].dump();
     fs::remove_all(dir);
   }
+}
+
+namespace {
+std::string sh_stdout(const std::string& cmd) {
+  std::string out;
+  if (FILE* p = ::popen(cmd.c_str(), "r")) {
+    char buf[4096];
+    while (std::fgets(buf, sizeof buf, p)) out += buf;
+    ::pclose(p);
+  }
+  return out;
+}
+}  // namespace
+
+// brash-post sample-stats: the statistics library on numbers from a script (bench/thermo_force.py). 1 2 3 4: mean
+// 2.5, sd sqrt(5/3), se sd / 2, CI95 = t(0.975, 3) se = 3.182 se (the library's table: 3 decimals).
+TEST(SampleStats, MeanSdSeAndStudentCi) {
+  const auto j = nlohmann::json::parse(sh_stdout(fmt::format("echo '1 2\n3 4' | {} sample-stats -", BRASH_POST_EXE)));
+  EXPECT_EQ(j["n"], 4);
+  EXPECT_DOUBLE_EQ(j["mean"].get<double>(), 2.5);
+  EXPECT_NEAR(j["sd"].get<double>(), std::sqrt(5.0 / 3.0), 1e-12);
+  EXPECT_NEAR(j["se"].get<double>(), std::sqrt(5.0 / 3.0) / 2, 1e-12);
+  EXPECT_NEAR(j["ci95"].get<double>(), 3.182 * std::sqrt(5.0 / 3.0) / 2, 1e-12);
+  const auto dir = scratch("sample_stats");
+  fs::create_directories(dir);
+  const std::string bad = fmt::format("echo '1 2 x3' | {} sample-stats - > {}/err.txt 2>&1", BRASH_POST_EXE, dir.string());
+  EXPECT_EQ(sh(bad), 2);
+  EXPECT_NE(brash::post::read_text_file(dir / "err.txt").find("'x3' (value 3) is not a finite number"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+// brash-post difference: two separate runs' resistance, relative difference and the CIs added in quadrature.
+TEST(Difference, RelativeDifferenceWithCombinedCi) {
+  const auto ref = scratch("difference_ref"), other = scratch("difference_other");
+  SyntheticRun a, b;
+  b.mean_resistance_N = 2.2;
+  write_synthetic_run(ref, a);
+  write_synthetic_run(other, b);
+  for (const auto& d : {ref, other})
+    ASSERT_EQ(sh(fmt::format("{} {} --no-plots --no-paraview > /dev/null 2>&1", BRASH_POST_EXE, d.string())), 0);
+  const auto report = [](const fs::path& d) {
+    return nlohmann::json::parse(brash::post::read_text_file(d / "report.json"))["resistance_model_N"];
+  };
+  const auto ra = report(ref), rb = report(other);
+  const auto j = nlohmann::json::parse(
+      sh_stdout(fmt::format("{} difference {} {}", BRASH_POST_EXE, ref.string(), other.string())));
+  const double m0 = ra["mean"], c0 = ra["ci95"], m1 = rb["mean"], c1 = rb["ci95"];
+  EXPECT_NEAR(j["diff_rel"].get<double>(), (m1 - m0) / m0, 1e-12);
+  EXPECT_NEAR(j["ci95_rel"].get<double>(), std::hypot(c0, c1) / m0, 1e-12);
+  EXPECT_NEAR(j["diff_rel"].get<double>(), 0.1, 0.03);  // 2.2 vs 2.0 N plateaus
+  EXPECT_TRUE(j["resolved"].get<bool>());
+  fs::remove_all(ref);
+  fs::remove_all(other);
 }

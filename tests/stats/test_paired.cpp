@@ -58,3 +58,14 @@ TEST(Paired, RejectsTooFewOrUnmatchedPairs) {
   EXPECT_THROW(paired_relative_difference(one, one), std::invalid_argument);
   EXPECT_THROW(paired_relative_difference(two, three), std::invalid_argument);
 }
+
+// Two separate runs: 10 +- 0.3 N against a reference of 12 +- 0.4 N differ by -1/6 with a CI of 0.5 / 12
+// (3-4-5: the CIs add in quadrature), resolved; 11.9 +- 0.3 is not.
+TEST(IndependentDifference, CisAddInQuadrature) {
+  const auto d = brash::stats::independent_relative_difference(12.0, 0.4, 10.0, 0.3);
+  EXPECT_NEAR(d.relative, -1.0 / 6.0, 1e-15);
+  EXPECT_NEAR(d.ci95_relative, 0.5 / 12.0, 1e-15);
+  EXPECT_TRUE(d.resolved());
+  EXPECT_FALSE(brash::stats::independent_relative_difference(12.0, 0.4, 11.9, 0.3).resolved());
+  EXPECT_THROW(brash::stats::independent_relative_difference(0.0, 0.4, 1.0, 0.3), std::invalid_argument);
+}

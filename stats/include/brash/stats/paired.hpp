@@ -39,6 +39,18 @@ struct PairedDifference {
 // a[i] and b[i] are pair i; needs >= 2 pairs and a.size() == b.size() (std::invalid_argument otherwise).
 PairedDifference paired_relative_difference(std::span<const double> a, std::span<const double> b);
 
+// Two independent estimates (separate runs, not pairs), each a mean with its own 95 % CI: the relative
+// difference (mean - reference) / reference and its CI, sqrt(ci_ref^2 + ci^2) / reference (the CIs of
+// independent errors add in quadrature). A single run per side holds the run-to-run scatter only through its
+// CI: a difference inside it is not resolved. Needs reference != 0 (std::invalid_argument).
+struct IndependentDifference {
+  double relative = NAN;       // (mean - reference) / reference
+  double ci95_relative = NAN;  // combined CI over the reference
+  bool resolved() const { return std::abs(relative) > ci95_relative; }
+};
+IndependentDifference independent_relative_difference(double reference, double reference_ci95, double mean,
+                                                      double ci95);
+
 // The CI lies inside (-tol, +tol).
 bool within(const MeanCi& m, double tol);
 
