@@ -6,7 +6,7 @@ usage: wall_from_runner_log.py RUNNER_LOG [--write-meta RUN_DIR]
 brash-liggghts-run keeps wall time and particle-steps over a run's attempts in meta.json ("attempts") since
 this script's commit; a run resumed with an older runner only has its last attempt's wall time there. The
 runner's stderr (e.g. the file `nohup brash-liggghts-run ... >> RUN.log` wrote) has a progress line every 30 s:
-an attempt starts at "[brash-liggghts] N spheres, ..." and its wall time is the last "elapsed" before the
+an attempt starts at "[brash-liggghts] N spheres ..." and its wall time is the last "elapsed" before the
 next start or its "done in" line (an attempt killed outright loses at most the 30 s after its last line).
 --write-meta stores the attempts, the total, the model's particle-steps (pieces x steps to the record's end) and a note of where they come from in RUN_DIR/meta.json.
 """
@@ -20,7 +20,7 @@ def attempts(log_text):
     """One entry per engine started: a runner start, and each restart file a runner tried."""
     out = []
     for line in log_text.splitlines():
-        if re.match(r"\[brash-liggghts\] \d+ spheres, ", line):
+        if re.match(r"\[brash-liggghts\] \d+ spheres(, | -> )", line):
             out.append({"from": "start", "t_from_s": None, "t_to_s": None, "wall_s": 0.0})
         elif not out:
             continue
