@@ -13,7 +13,7 @@ DEB_PACKAGES := g++ make cmake ninja-build pkg-config \
   clang libclang-rt-14-dev \
   yade pybind11-dev python3-dev
 
-.PHONY: deps build test run bench study clean
+.PHONY: deps build test run bench study install clean
 
 deps:
 	@missing=""; for p in $(DEB_PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
@@ -45,6 +45,12 @@ bench: build
 STUDY ?= full
 study: build
 	$(BUILD_DIR)/bin/brash-study --study study/$(STUDY).yaml
+
+# The tools, the core library (find_package(brash): brash::core), the cases, hull data, study files and doc pages
+# into $(PREFIX) (README.md "Install"); the installed tree finds its data relative to its bin/ folder.
+PREFIX ?= /usr/local
+install: build
+	cmake --install $(BUILD_DIR) --prefix $(PREFIX)
 
 clean:
 	rm -rf $(BUILD_DIR)

@@ -18,13 +18,7 @@
 #include <sstream>
 
 #include "brash/error.hpp"
-
-#ifndef BRASH_SOURCE_DIR
-#define BRASH_SOURCE_DIR ""
-#endif
-#ifndef BRASH_BINARY_DIR
-#define BRASH_BINARY_DIR ""
-#endif
+#include "brash/paths.hpp"
 
 namespace fs = std::filesystem;
 
@@ -85,10 +79,7 @@ std::vector<fs::path> hull_file_candidates(const fs::path& case_dir, const fs::p
   std::vector<fs::path> out{case_dir / file};
   if (const char* env = std::getenv("BRASH_HULL_DIR"); env != nullptr && *env != '\0')
     out.push_back(fs::path(env) / file);
-  if (std::string_view(BRASH_BINARY_DIR).size() > 0)
-    out.push_back(fs::path(BRASH_BINARY_DIR) / "hull_meshes" / file);
-  if (std::string_view(BRASH_SOURCE_DIR).size() > 0)
-    out.push_back(fs::path(BRASH_SOURCE_DIR) / "hull_meshes" / file);
+  out.push_back(paths::data_dir() / "hull_meshes" / file);
   return out;
 }
 

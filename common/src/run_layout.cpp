@@ -1,9 +1,7 @@
 // Run directory helpers (see run_layout.hpp).
 #include "brash/run_layout.hpp"
 
-#include <array>
 #include <chrono>
-#include <cstdio>
 #include <fstream>
 #include <fcntl.h>
 #include <sys/file.h>
@@ -13,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "brash/error.hpp"
+#include "brash_git_commit.hpp"  // generated at build time (cmake/git_commit.cmake)
 
 namespace brash::run {
 
@@ -47,17 +46,7 @@ void write_meta(const std::filesystem::path& run_dir, const nlohmann::json& meta
   write_atomic(run_dir / "meta.json", meta.dump(2) + "\n");
 }
 
-std::string git_commit() {
-  const std::string cmd = std::string("git -C '") + BRASH_SOURCE_DIR + "' rev-parse HEAD 2>/dev/null";
-  std::array<char, 128> buf{};
-  std::string out;
-  if (FILE* p = ::popen(cmd.c_str(), "r")) {
-    while (std::fgets(buf.data(), buf.size(), p)) out += buf.data();
-    ::pclose(p);
-  }
-  while (!out.empty() && (out.back() == '\n' || out.back() == ' ')) out.pop_back();
-  return out.empty() ? "unknown" : out;
-}
+std::string git_commit() { return kGitCommit; }
 
 RunDirLock::RunDirLock(const std::filesystem::path& run_dir) {
   const auto file = run_dir / ".lock";

@@ -9,12 +9,13 @@
 
 #include "brash/case_derive.hpp"
 #include "brash/error.hpp"
+#include "brash/paths.hpp"
 
 namespace fs = std::filesystem;
 
 namespace brash::run {
 
-fs::path executable_dir() { return fs::read_symlink("/proc/self/exe").parent_path(); }
+fs::path executable_dir() { return paths::executable_dir(); }
 
 std::string shell_quote(const fs::path& p) {
   std::string out = "'";
@@ -62,10 +63,16 @@ void prepare_case_inputs(const Case& c, const fs::path& case_file, const std::st
     if (run_shell(shell_quote(executable_dir() / "brash-pack") + " " + shell_quote(case_file.parent_path())) != 0)
       throw InputError(case_file.string() + ": brash-pack failed to generate " + c.ice.packing_file.string());
   }
-  if (!fs::exists(c.hull.file))
-    throw InputError(fmt::format("{}: hull.file {} not found (searched the case folder, $BRASH_HULL_DIR, "
-                                 "<build>/hull_meshes, <repo>/hull_meshes); build it with `make build`",
-                                 case_file.string(), c.hull.file.string()));
+  if (!fs::exists(c.hull.file)) {
+    const fs::path case_dir = fs::absolute(case_file).parent_path();
+    const fs::path name = c.hull.file.lexically_relative(case_dir);
+    const char* hull_dir = std::getenv("BRASH_HULL_DIR");
+    throw InputError(fmt::format("{}: hull.file {} not found (searched: the case folder {}, $BRASH_HULL_DIR{}, {}); "
+                                 "build the JBC hull with `make build`, or set BRASH_HULL_DIR or BRASH_DATA_DIR",
+                                 case_file.string(), name.empty() ? c.hull.file.string() : name.string(),
+                                 case_dir.string(), hull_dir && *hull_dir ? fmt::format(" ({})", hull_dir) : " (unset)",
+                                 (paths::data_dir() / "hull_meshes").string()));
+  }
 }
 
 }  // namespace brash::run

@@ -18,10 +18,7 @@
 #include "brash/case.hpp"
 #include "brash/case_derive.hpp"
 #include "brash/error.hpp"
-
-#ifndef BRASH_SOURCE_DIR
-#define BRASH_SOURCE_DIR "."
-#endif
+#include "brash/paths.hpp"
 
 namespace fs = std::filesystem;
 
@@ -60,7 +57,7 @@ struct NewCaseOptions {
 int make_case(const NewCaseOptions& o) {
   if (!std::regex_match(o.name, std::regex("[A-Za-z0-9_.-]+")) || o.name == "." || o.name == "..")
     throw brash::InputError(fmt::format("case name '{}': use letters, digits, '_', '-', '.'", o.name));
-  const fs::path templ = o.templ.empty() ? (fs::path(BRASH_SOURCE_DIR) / "cases/jbc_ia_5kn/case.yaml").lexically_normal()
+  const fs::path templ = o.templ.empty() ? brash::paths::data_file("cases/jbc_ia_5kn/case.yaml", "the default template")
                                      : fs::path(o.templ);
   (void)brash::load_case(templ);  // the template itself must be valid
   YAML::Node n = YAML::LoadFile(templ.string());

@@ -1,6 +1,7 @@
 // Reading the JBC offsets table and centre-plane profile (CSV, metres, model scale 1:40).
 #include <brash/error.hpp>
 #include <brash/hull/jbc.hpp>
+#include <brash/paths.hpp>
 
 #include <fmt/format.h>
 
@@ -9,10 +10,6 @@
 #include <fstream>
 #include <map>
 #include <sstream>
-
-#ifndef BRASH_HULL_DATA_DIR
-#define BRASH_HULL_DATA_DIR "hull_meshes/data"
-#endif
 
 namespace brash::hull {
 namespace {
@@ -51,9 +48,13 @@ std::vector<std::vector<double>> read_csv(const fs::path& file, std::size_t cols
 
 }  // namespace
 
-fs::path default_jbc_data_dir() { return BRASH_HULL_DATA_DIR; }
+fs::path default_jbc_data_dir() { return paths::data_dir() / "hull_meshes" / "data"; }
 
 JbcData load_jbc_data(const fs::path& dir) {
+  if (std::error_code ec; !fs::is_directory(dir, ec))
+    throw InputError(fmt::format("JBC data folder {} not found (brash's data folder: {}; set BRASH_DATA_DIR, or "
+                                 "brash-hull jbc --data DIR)",
+                                 dir.string(), paths::data_dir_description()));
   JbcData d;
   const fs::path offsets = dir / "jbc_offsets_1to40.csv";
   std::map<double, std::map<double, double>> table;  // x -> z -> Y

@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <brash/paths.hpp>
 #include <brash/post/study_report/document.hpp>
 
 namespace fs = std::filesystem;
@@ -44,11 +45,14 @@ int main(int argc, char** argv) {
   std::string paper_case = "cases/jbc_ia_5kn/case.yaml";
   app.add_option("--paper-case", paper_case, "the paper case, whose published values (its references) the "
                  "document compares with")->capture_default_str();
-  std::string text_template = BRASH_STUDY_REPORT_TEMPLATE;
-  app.add_option("--template", text_template, "the document's prose: named text blocks with {{placeholders}}")
-      ->capture_default_str();
+  std::string text_template;
+  app.add_option("--template", text_template, "the document's prose: named text blocks with {{placeholders}} "
+                 "(default: <data>/study_report/templates/study.md.tmpl, data = <prefix>/share/brash or "
+                 "$BRASH_DATA_DIR)");
   CLI11_PARSE(app, argc, argv);
   try {
+    if (text_template.empty())
+      text_template = brash::paths::data_file("study_report/templates/study.md.tmpl", "the study text template").string();
     const auto text = report::TextTemplate::load(text_template);
     const report::Study study = report::load_study(manifest, paper_case);
     const fs::path out_p = out;

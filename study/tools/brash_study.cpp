@@ -13,12 +13,9 @@
 #include <thread>
 
 #include "brash/error.hpp"
+#include "brash/paths.hpp"
 #include "brash/study/study.hpp"
 #include "brash/study/runner.hpp"
-
-#ifndef BRASH_SOURCE_DIR
-#define BRASH_SOURCE_DIR "."
-#endif
 
 namespace fs = std::filesystem;
 using namespace brash::study;
@@ -26,7 +23,7 @@ using namespace brash::study;
 namespace {
 
 struct Options {
-  std::string study, doc, work, paper_dir, archive_dir, bin, repo = BRASH_SOURCE_DIR;
+  std::string study, doc, work, paper_dir, archive_dir, bin, repo;
   int ranks = std::thread::hardware_concurrency() >= 2 ? 2 : 1;
   int nice = 5;
   std::vector<std::string> engines;
@@ -35,11 +32,15 @@ struct Options {
 
 fs::path absolute(const std::string& p) { return fs::absolute(p).lexically_normal(); }
 
-// The folder of this executable: the other tools are built beside it.
-fs::path own_bin_dir() {
+// The folder of this executable: the other tools are built (or installed) beside it.
+fs::path own_bin_dir() { return brash::paths::executable_dir(); }
+
+// The repository a study file belongs to: study files live in <repo>/study/, so the folder above the file's
+// folder, with symbolic links resolved (<build>/share/brash/study links to the repository's study/).
+fs::path repo_of(const fs::path& study_file) {
   std::error_code ec;
-  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  return ec ? fs::path("build/bin") : self.parent_path();
+  const fs::path real = fs::weakly_canonical(fs::absolute(study_file), ec);
+  return (ec ? fs::absolute(study_file) : real).parent_path().parent_path();
 }
 
 std::vector<Engine> engines_of(const Options& o, const Study& study) {
@@ -85,7 +86,8 @@ void print_plan(const Plan& plan) {
 int main(int argc, char** argv) {
   CLI::App app{"brash-study: run a study file (study/<name>.yaml) and write the study document"};
   Options o;
-  app.add_option("--study", o.study, "study file (default: <repo>/study/$STUDY.yaml, STUDY=full)");
+  app.add_option("--study", o.study, "study file (default: <data>/study/$STUDY.yaml, STUDY=full; data = "
+                                     "<prefix>/share/brash or $BRASH_DATA_DIR)");
   app.add_option("--out", o.doc, "the document (default docs/study.md)")->envname("STUDY_DOC");
   app.add_option("--work", o.work, "work dir: cases, runs, logs, manifest (default runs/study-<name>)")->envname("STUDY_WORK");
   app.add_option("--paper-dir", o.paper_dir, "where the paper runs, shared cases and ensembles live (default runs)")
@@ -93,7 +95,8 @@ int main(int argc, char** argv) {
   app.add_option("--archive", o.archive_dir, "archive of complete paper runs and ensemble summaries (default "
                                              "docs/paper_runs)")->envname("STUDY_ARCHIVE");
   app.add_option("--bin", o.bin, "the executables (default: this program's folder)")->envname("BRASH_BIN");
-  app.add_option("--repo", o.repo, "the repository (the study file's paths are relative to it)")->capture_default_str();
+  app.add_option("--repo", o.repo, "the repository (the study file's paths are relative to it; default: the folder "
+                                   "above the study file's folder)");
   app.add_option("--ranks", o.ranks, "MPI ranks / threads per run")->envname("BRASH_RANKS")->capture_default_str();
   app.add_option("--nice", o.nice, "nice level of the engines")->envname("STUDY_NICE")->capture_default_str();
   app.add_option("--engines", o.engines, "engines whose variants run (default: the study file's)")->delimiter(',');
@@ -105,8 +108,10 @@ int main(int argc, char** argv) {
   try {
     if (o.study.empty()) {
       const char* mode = std::getenv("STUDY");
-      o.study = (fs::path(o.repo) / "study" / fmt::format("{}.yaml", mode && *mode ? mode : "full")).string();
+      const fs::path file = fs::path("study") / fmt::format("{}.yaml", mode && *mode ? mode : "full");
+      o.study = (o.repo.empty() ? brash::paths::data_file(file, "the study file") : fs::path(o.repo) / file).string();
     }
+    if (o.repo.empty()) o.repo = repo_of(o.study).string();
     const Study study = load_study(o.study);
     Settings s = settings_of(o, study);
     if (o.plan_only) {

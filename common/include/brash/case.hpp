@@ -233,7 +233,8 @@ Case parse_case(const std::string& yaml_text, const std::filesystem::path& base_
 std::string dump_case_yaml(const Case& c);
 
 // Where a relative hull file name is looked up, in order: the case folder, $BRASH_HULL_DIR,
-// <build>/hull_meshes/, <repo>/hull_meshes/. Absolute names are returned as they are.
+// <data>/hull_meshes/ (brash/paths.hpp: <prefix>/share/brash or $BRASH_DATA_DIR). Absolute names are returned
+// as they are.
 std::vector<std::filesystem::path> hull_file_candidates(const std::filesystem::path& case_dir,
                                                         const std::filesystem::path& file);
 // The first existing candidate; if none exists, <case_dir>/file (runners report it as missing).

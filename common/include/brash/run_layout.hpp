@@ -26,7 +26,7 @@ std::filesystem::path make_run_dir(const std::filesystem::path& runs_root, const
 // wall_time_s, particle_steps, git_commit, status (running | complete | failed), reason.
 void write_meta(const std::filesystem::path& run_dir, const nlohmann::json& meta);
 
-// Commit of the source tree the binary was built from ("unknown" outside a git checkout).
+// Commit the binary was built from, recorded at build time ("unknown" when built outside a git checkout).
 std::string git_commit();
 
 // Exclusive lock on a run directory while a runner works in it (flock on RUN_DIR/.lock), so that a second

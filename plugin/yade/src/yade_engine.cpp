@@ -11,6 +11,7 @@
 
 #include "brash/error.hpp"
 #include "brash/guard.hpp"
+#include "brash/paths.hpp"
 #include "brash/run_layout.hpp"
 #include "brash/runner_setup.hpp"
 
@@ -19,10 +20,11 @@ namespace fs = std::filesystem;
 namespace brash::yade {
 namespace {
 
-// Where the scene script and the module are: next to the build by default, overridable.
-fs::path env_or(const char* var, const char* fallback) {
+// YADE itself (the launcher found at configure time, a system program) and the scene script (beside the module in
+// brash::paths::yade_python_dir()), each overridable.
+fs::path env_or(const char* var, const fs::path& fallback) {
   const char* v = std::getenv(var);
-  return v && *v ? fs::path(v) : fs::path(fallback);
+  return v && *v ? fs::path(v) : fallback;
 }
 
 std::string yade_command(const fs::path& run_dir, int threads) {
@@ -32,9 +34,9 @@ std::string yade_command(const fs::path& run_dir, int threads) {
   return fmt::format(
       "cd {} && echo $$ > engine.pid && HOME={} PYTHONPATH={}${{PYTHONPATH:+:$PYTHONPATH}} OMP_NUM_THREADS={} exec {} "
       "-n -j{} -x {} scene.json 2>&1",
-      run::shell_quote(run_dir), run::shell_quote(home), run::shell_quote(env_or("BRASH_YADE_PYDIR", BRASH_YADE_PYDIR)),
-      threads, run::shell_quote(env_or("BRASH_YADE_EXE", BRASH_YADE_EXE)), threads,
-      run::shell_quote(env_or("BRASH_YADE_SCRIPT", BRASH_YADE_SCRIPT)));
+      run::shell_quote(run_dir), run::shell_quote(home), run::shell_quote(paths::yade_python_dir()), threads,
+      run::shell_quote(env_or("BRASH_YADE_EXE", BRASH_YADE_EXE)), threads,
+      run::shell_quote(env_or("BRASH_YADE_SCRIPT", paths::yade_python_dir() / "brash_yade_scene.py")));
 }
 
 long read_pid(const fs::path& file) {

@@ -20,7 +20,7 @@ struct JbcData {
   std::vector<std::vector<std::pair<double, double>>> profile_z_m;  // per station: [z_bottom, z_top] intervals
 };
 
-// Folder of the data files compiled into the library (hull_meshes/data of the source tree).
+// Folder of the data files: <data>/hull_meshes/data (brash/paths.hpp; the repository's hull_meshes/data).
 std::filesystem::path default_jbc_data_dir();
 
 // Reads jbc_offsets_1to40.csv and jbc_profile_1to40.csv; throws brash::InputError naming the file.
