@@ -1,6 +1,9 @@
 // brash-case new NAME [--speed ... --scale ... --width ... ...]: makes a new case folder
 // <cases-dir>/NAME/case.yaml from a template case (default: the paper case) with the given values
 // replaced, then validates it with the loader (the folder is removed again if it is invalid).
+// brash-case new NAME --hull FILE --draft T: the same around the user's own hull (docs/own_hull.md): the mesh is
+// checked and measured with the hull library (closed, outward, units, frame, hydrostatics, FSICR parameters),
+// refused with the reason when it fails, copied into the case folder as STL, and the hull keys are filled in.
 // brash-case derive BASE --set key=value ... --out DIR: DIR/case.yaml, a variant of BASE through the case library
 // (brash::write_derived_case: keys set, paths and packing as brash/case_derive.hpp says, checked by the loader).
 // brash-case get CASE KEY: prints a key's value in the resolved case (every default filled in).
@@ -8,16 +11,26 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <optional>
 #include <regex>
+#include <sstream>
 
 #include "brash/case.hpp"
 #include "brash/case_derive.hpp"
 #include "brash/error.hpp"
+#include "brash/hull/hydrostatics.hpp"
+#include "brash/hull/mesh.hpp"
 #include "brash/paths.hpp"
 
 namespace fs = std::filesystem;
@@ -32,6 +45,10 @@ std::string text(double v) {
   return s;
 }
 
+// Measured hull values go in with 6 significant digits: an STL holds float32 vertices, so a 0.6 m beam reads
+// 0.600000023842, and the digits past the sixth are the file's rounding, not the hull.
+std::string measured(double v) { return text(std::stod(fmt::format("{:.6g}", v))); }
+
 double number_at(const YAML::Node& n, const char* sec, const char* key, double fallback) {
   const YAML::Node v = n[sec][key];
   return v.IsDefined() && v.IsScalar() ? v.as<double>() : fallback;
@@ -45,10 +62,220 @@ YAML::Node flow_pair(double a, double b) {
   return p;
 }
 
+// ---- the user's own hull (--hull) ------------------------------------------------------------------------------
+
+std::string lower_extension(const fs::path& file) {
+  std::string e = file.extension().string();
+  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+  return e;
+}
+
+// Wavefront OBJ: `v x y z` and `f a b c ...` (a/b/c may carry /texture/normal indices, negative = from the end);
+// polygons are split into a fan of triangles. Vertices at the same position are welded (exporters that split
+// vertices by normal would otherwise leave the surface open).
+brash::hull::Mesh read_obj(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) throw brash::InputError(fmt::format("{}: cannot open the file", file.string()));
+  std::vector<Eigen::Vector3d> raw;
+  std::vector<int> weld;  // raw vertex -> welded index
+  std::map<std::array<double, 3>, int> seen;
+  brash::hull::Mesh mesh;
+  std::string line;
+  for (int line_no = 1; std::getline(in, line); ++line_no) {
+    std::istringstream ls(line);
+    std::string tag;
+    ls >> tag;
+    const auto bad = [&](const std::string& what) {
+      return brash::InputError(fmt::format("{}:{}: {} ('{}')", file.string(), line_no, what, line));
+    };
+    if (tag == "v") {
+      std::array<double, 3> p{};
+      if (!(ls >> p[0] >> p[1] >> p[2])) throw bad("a vertex needs three numbers");
+      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) throw bad("vertex is not finite");
+      raw.emplace_back(p[0], p[1], p[2]);
+      const auto [it, inserted] = seen.emplace(p, static_cast<int>(mesh.vertices.size()));
+      if (inserted) mesh.vertices.emplace_back(p[0], p[1], p[2]);
+      weld.push_back(it->second);
+    } else if (tag == "f") {
+      std::vector<int> poly;
+      for (std::string ref; ls >> ref;) {
+        long idx = 0;
+        try {
+          idx = std::stol(ref.substr(0, ref.find('/')));
+        } catch (const std::exception&) {
+          throw bad(fmt::format("face index '{}' is not a number", ref));
+        }
+        const long n = static_cast<long>(raw.size());
+        const long zero_based = idx > 0 ? idx - 1 : n + idx;
+        if (idx == 0 || zero_based < 0 || zero_based >= n)
+          throw bad(fmt::format("face index {} outside the {} vertices read so far", idx, n));
+        poly.push_back(weld[static_cast<std::size_t>(zero_based)]);
+      }
+      if (poly.size() < 3) throw bad("a face needs at least three vertices");
+      for (std::size_t k = 1; k + 1 < poly.size(); ++k) mesh.faces.push_back({poly[0], poly[k], poly[k + 1]});
+    }
+  }
+  if (mesh.faces.empty()) throw brash::InputError(fmt::format("{}: no faces ('f' lines) in the OBJ file", file.string()));
+  return mesh;
+}
+
+// Formats other than STL and OBJ go through meshio in /usr/bin/python3 (the hull library's reader): say plainly
+// when that interpreter or its meshio is missing instead of passing on a Python traceback.
+void require_meshio(const fs::path& file) {
+  const char* python = "/usr/bin/python3";
+  const auto hint = fmt::format("convert the hull to STL or OBJ, or install the Debian package python3-meshio");
+  if (::access(python, X_OK) != 0)
+    throw brash::InputError(fmt::format("{}: {} files are read through meshio, but {} is missing ({})", file.string(),
+                                        lower_extension(file), python, hint));
+  const std::string cmd = fmt::format("{} -c 'import meshio' >/dev/null 2>&1", python);
+  if (std::system(cmd.c_str()) != 0)
+    throw brash::InputError(fmt::format("{}: {} files are read through meshio, but {} cannot import meshio ({})",
+                                        file.string(), lower_extension(file), python, hint));
+}
+
+struct OwnHull {
+  fs::path source;              // as given on the command line
+  fs::path stl;                 // the STL that goes into the case folder (source, or a converted temporary)
+  bool converted = false;       // written from another format
+  std::string case_file_name;   // its name in the case folder
+  brash::hull::MeshCheck check;
+  brash::hull::Hydrostatics hydro;
+  brash::hull::FsicrDetail fsicr;
+  double lpp_m = 0, draft_m = 0, beam_m = 0;
+  bool lpp_from_waterline = false;  // no --lpp: Lpp is the waterline length
+  double x_max_m = 0;           // the bow's most forward point, hull frame
+};
+
+// Why a closed-surface check failed, in words.
+std::string topology_problem(const brash::hull::MeshCheck& c) {
+  std::vector<std::string> why;
+  if (!c.closed)
+    why.push_back(fmt::format("the hull is not closed ({} boundary edges: holes or a missing deck/transom; a hull must be "
+                              "a watertight surface for buoyancy, hydrostatics and the penetration guard)",
+                              c.boundary_edges));
+  if (!c.manifold) why.push_back(fmt::format("{} non-manifold edges (shared by three or more faces)", c.nonmanifold_edges));
+  if (!c.oriented)
+    why.push_back(fmt::format("faces are not consistently oriented ({} edges run the same way in two faces)",
+                              c.misoriented_edges));
+  else if (c.closed && !c.outward)
+    why.push_back(fmt::format("faces point inward (enclosed volume {:.6g} m^3): flip the face order", c.signed_volume_m3));
+  if (c.degenerate_faces > 0) why.push_back(fmt::format("{} degenerate faces (zero area)", c.degenerate_faces));
+  return fmt::format("{}", fmt::join(why, "; "));
+}
+
+// Checks the mesh as a hull in the case frame and measures it; throws brash::InputError with the reason when it
+// is not fit for a case.
+void check_and_measure(OwnHull& h, const brash::hull::Mesh& mesh, std::optional<double> lpp_m) {
+  namespace hull = brash::hull;
+  const double draft_m = h.draft_m;
+  const auto refuse = [&](const std::string& why) {
+    return brash::InputError(fmt::format("--hull {}: refused: {}", h.source.string(), why));
+  };
+  h.check = hull::check_mesh(mesh);
+  if (!h.check.ok()) throw refuse(topology_problem(h.check));
+  if (!(draft_m > 0)) throw refuse(fmt::format("--draft {} m is not positive", draft_m));
+  if (lpp_m && !(*lpp_m > 0)) throw refuse(fmt::format("--lpp {} m is not positive", *lpp_m));
+  if (const auto units = hull::unit_problems(mesh, draft_m, lpp_m.value_or(0.0)); !units.empty())
+    throw refuse(fmt::format("{} (hull frame: metres, x forward, keel at z = 0, waterline at z = --draft)",
+                             fmt::join(units, "; ")));
+  const double y_lo = h.check.min_m.y(), y_hi = h.check.max_m.y();
+  if (std::abs(y_lo + y_hi) > 0.01 * (y_hi - y_lo))
+    throw refuse(fmt::format("the hull spans y = {:.6g} .. {:.6g} m, not centred on y = 0 (the channel's centreline): "
+                             "move it so that its centre plane is y = 0", y_lo, y_hi));
+  h.hydro = hull::hydrostatics(mesh, draft_m, lpp_m.value_or(0.0));
+  if (!(h.hydro.volume_m3 > 0) || !(h.hydro.lwl_m > 0) || !(h.hydro.bwl_m > 0))
+    throw refuse(fmt::format("no displaced volume below the waterline z = {} m", draft_m));
+  h.lpp_m = lpp_m.value_or(h.hydro.lwl_m);
+  h.lpp_from_waterline = !lpp_m;
+  h.beam_m = h.hydro.bwl_m;
+  h.x_max_m = h.check.max_m.x();
+  try {
+    h.fsicr = hull::measure_fsicr_detail(mesh, draft_m, h.lpp_m);
+  } catch (const brash::InputError& e) {
+    throw refuse(fmt::format("FSICR hull parameters cannot be measured ({})", e.what()));
+  }
+}
+
+// Reads the hull (STL as is; OBJ and meshio formats converted to a temporary STL), checks and measures it.
+OwnHull measure_own_hull(const fs::path& source, double draft_m, std::optional<double> lpp_m) {
+  namespace hull = brash::hull;
+  if (!fs::is_regular_file(source))
+    throw brash::InputError(fmt::format("--hull {}: no such file", source.string()));
+  OwnHull h;
+  h.source = source;
+  h.draft_m = draft_m;
+  const std::string ext = lower_extension(source);
+  hull::Mesh mesh;
+  if (ext == ".stl") {
+    mesh = hull::read_mesh(source);
+    h.stl = source;
+    h.case_file_name = source.filename().string();
+  } else {
+    // OBJ natively, anything else through meshio; either way the case gets a binary STL, read back here so the
+    // checks see exactly what the engines will (float32 vertices, welded).
+    if (ext == ".obj") {
+      mesh = read_obj(source);
+    } else {
+      require_meshio(source);
+      mesh = hull::read_mesh(source);
+    }
+    h.converted = true;
+    h.case_file_name = source.stem().string() + ".stl";
+    h.stl = fs::temp_directory_path() / fmt::format("brash_case_hull_{}.stl", ::getpid());
+    hull::write_stl(h.stl, mesh);
+    try {
+      mesh = hull::read_mesh(h.stl);
+      check_and_measure(h, mesh, lpp_m);
+    } catch (...) {
+      std::error_code ec;
+      fs::remove(h.stl, ec);
+      throw;
+    }
+    return h;
+  }
+  check_and_measure(h, mesh, lpp_m);
+  return h;
+}
+
+void print_own_hull(const OwnHull& h, double lambda) {
+  const auto& p = h.fsicr.params;
+  std::cout << fmt::format(
+      "brash-case: hull {}: closed, outward, {} faces; Lpp {:.4g} m{}, waterline beam {:.4g} m, draft {:.4g} m, "
+      "displacement {:.4g} m^3, Cb {:.3f}\n",
+      h.source.string(), h.check.faces, h.lpp_m, h.lpp_from_waterline ? " (waterline length)" : "", h.beam_m,
+      h.draft_m, h.hydro.volume_m3, h.hydro.cb);
+  std::cout << fmt::format(
+      "brash-case: FSICR parameters (full scale, 1:{:g}): L {:.4g} m, B {:.4g} m, T {:.4g} m, alpha {:.1f} deg, "
+      "phi1 {:.1f} deg{}, phi2 {:.1f} deg, psi {:.1f} deg, L_par {:.4g} m, L_bow {:.4g} m, A_wf {:.4g} m^2\n",
+      lambda, p.L_m * lambda, p.B_m * lambda, p.T_m * lambda, p.alpha_deg, p.phi1_deg,
+      h.fsicr.bulbous_bow ? " (bulbous bow)" : "", p.phi2_deg, p.psi_deg, p.L_par_m * lambda, p.L_bow_m * lambda,
+      p.A_wf_m2 * lambda * lambda);
+  if (!(p.L_bow_m > 0) || !(p.A_wf_m2 > 0))
+    std::cerr << fmt::format("brash-case: note: this hull has no bow the FSICR formula can take (L_bow {:.3g} m, A_wf "
+                             "{:.3g} m^2): reports will give the resistance without FSICR R_CH unless the case's "
+                             "fsicr: section sets L_bow_m and A_wf_m2 (docs/case_format.md)\n",
+                             p.L_bow_m * lambda, p.A_wf_m2 * lambda * lambda);
+}
+
+// How far the template's bow stands outside the ice at t = 0, in its ship lengths (its hull's most forward point:
+// the JBC's bulb is ahead of its FP); 1 % when the template's hull cannot be read or starts in the ice.
+double bow_gap_over_lpp(const brash::Case& base) {
+  double x_max = base.hull.lpp_m;
+  try {
+    x_max = brash::hull::check_mesh(brash::hull::read_mesh(base.hull.file)).max_m.x();
+  } catch (const brash::InputError&) {
+  }
+  const double gap = -(base.hull.start_x_m + x_max) / base.hull.lpp_m;
+  return gap > 0 ? gap : 0.01;
+}
+
+// ---- brash-case new -----------------------------------------------------------------------------------------------
+
 struct NewCaseOptions {
   std::string name, cases_dir = "cases", templ, description, fluid_model, treatment, ice_class, packing_mode;
+  std::string hull;
   std::optional<double> speed, scale, length, width, thickness, diameter, diameter_sd, porosity, friction_ice,
-      friction_hull, friction_wall, duration;
+      friction_hull, friction_wall, duration, draft, lpp;
   std::vector<double> window, band;
   std::optional<std::uint64_t> seed;
   bool force = false;
@@ -59,23 +286,82 @@ int make_case(const NewCaseOptions& o) {
     throw brash::InputError(fmt::format("case name '{}': use letters, digits, '_', '-', '.'", o.name));
   const fs::path templ = o.templ.empty() ? brash::paths::data_file("cases/jbc_ia_5kn/case.yaml", "the default template")
                                      : fs::path(o.templ);
-  (void)brash::load_case(templ);  // the template itself must be valid
+  const brash::Case base = brash::load_case(templ);  // the template itself must be valid
   YAML::Node n = YAML::LoadFile(templ.string());
+  if (o.hull.empty() && (o.draft || o.lpp))
+    throw brash::InputError("--draft and --lpp describe the hull given with --hull FILE (without it the template's hull "
+                            "is used as it is)");
+  if (!o.hull.empty() && !o.draft)
+    throw brash::InputError(fmt::format("--hull {} needs --draft D: the waterline's height above the keel in m (a mesh "
+                                        "does not say where its waterline is)", o.hull));
+  // The user's hull: checked and measured before anything is written (a refused hull leaves no folder).
+  std::optional<OwnHull> own;
+  if (!o.hull.empty()) {
+    try {
+      own = measure_own_hull(o.hull, *o.draft, o.lpp);
+    } catch (const brash::InputError& e) {  // the hull library's messages name the file; say which option it came from
+      std::string what = std::regex_replace(e.what(), std::regex("\\s+\\)"), ")");  // meshio's trailing newline
+      throw brash::InputError(what.starts_with("--hull") ? what : "--hull: refused: " + what);
+    }
+  }
+  struct TempStl {  // a converted hull's temporary STL goes once it is copied (or the case is refused)
+    fs::path file;
+    ~TempStl() {
+      std::error_code ec;
+      if (!file.empty()) fs::remove(file, ec);
+    }
+  } temp_stl{own && own->converted ? own->stl : fs::path()};
 
   n["name"] = o.name;
-  n["description"] = o.description.empty() ? fmt::format("made by brash-case from {}", templ.filename().string())
-                                           : o.description;
-  // New scale: hull dimensions and (unless given) speed follow Froude similarity from the template.
+  n["description"] = !o.description.empty() ? o.description
+                     : own ? fmt::format("made by brash-case from {} with the hull {}", templ.filename().string(),
+                                         own->source.filename().string())
+                           : fmt::format("made by brash-case from {}", templ.filename().string());
+  // New scale: hull dimensions and (unless given) speed follow Froude similarity from the template (the user's
+  // hull keeps its measured dimensions; the speed keeps the template's full-scale speed).
   if (o.scale) {
     const double old_lambda = number_at(n, "ship", "scale_lambda", 28.5);
     const double k = old_lambda / *o.scale;
-    for (const char* key : {"draft_m", "lpp_m", "beam_m", "start_x_m"})
-      if (n["hull"][key].IsDefined()) n["hull"][key] = text(n["hull"][key].as<double>() * k);
+    if (!own)
+      for (const char* key : {"draft_m", "lpp_m", "beam_m", "start_x_m"})
+        if (n["hull"][key].IsDefined()) n["hull"][key] = text(n["hull"][key].as<double>() * k);
     n["ship"]["scale_lambda"] = text(*o.scale);
     if (!o.speed) n["ship"]["speed_m_s"] = text(number_at(n, "ship", "speed_m_s", 0.482) * std::sqrt(k));
-    std::cerr << fmt::format("brash-case: note: hull dimensions scaled by {:.4g}; hull.file still names {} "
-                             "-- generate the hull at 1:{} with the hull tool and point hull.file at it\n",
-                             k, n["hull"]["file"].as<std::string>(), *o.scale);
+    if (!own)
+      std::cerr << fmt::format("brash-case: note: hull dimensions scaled by {:.4g}; hull.file still names {} "
+                               "-- generate the hull at 1:{} with the hull tool and point hull.file at it\n",
+                               k, n["hull"]["file"].as<std::string>(), *o.scale);
+  }
+  if (own) {
+    // Hull keys from the measurement; the channel follows the hull where not given: the template's width in beams,
+    // its length in ship lengths, and the bow as far (in ship lengths) outside the ice at t = 0.
+    n["hull"]["file"] = own->case_file_name;
+    n["hull"]["draft_m"] = text(own->draft_m);
+    n["hull"]["lpp_m"] = measured(own->lpp_m);
+    n["hull"]["beam_m"] = measured(own->beam_m);
+    n["hull"]["start_x_m"] = measured(-(own->x_max_m + bow_gap_over_lpp(base) * own->lpp_m));
+    if (!o.width) {
+      const double w = std::stod(measured(base.channel.width_m / base.hull.beam_m * own->beam_m));
+      n["channel"]["width_m"] = text(w);
+      std::cerr << fmt::format("brash-case: note: channel width {:.4g} m = {:.3g} beams, as in the template (--width to "
+                               "change it)\n", w, base.channel.width_m / base.hull.beam_m);
+    }
+    if (!o.length) {
+      const double l = std::stod(measured(base.channel.length_m / base.hull.lpp_m * own->lpp_m));
+      n["channel"]["length_m"] = text(l);
+      std::cerr << fmt::format("brash-case: note: channel length {:.4g} m = {:.3g} ship lengths, as in the template "
+                               "(--length to change it)\n", l, base.channel.length_m / base.hull.lpp_m);
+    }
+    const double width = o.width ? *o.width : number_at(n, "channel", "width_m", base.channel.width_m);
+    if (width <= own->beam_m)
+      throw brash::InputError(fmt::format("channel.width_m {:.6g} m is not wider than the waterline beam {:.6g} m of "
+                                          "--hull {} (--width)", width, own->beam_m, o.hull));
+    if (width < 1.2 * own->beam_m)
+      std::cerr << fmt::format("brash-case: note: the channel ({:.4g} m) is only {:.2f} beams wide: the ice has little "
+                               "room beside the hull (FSICR channels are about 2 beams)\n", width, width / own->beam_m);
+    if (!o.scale)
+      std::cerr << fmt::format("brash-case: note: scale 1:{:g} from the template (--scale): full-scale results and the "
+                               "FSICR comparison use it\n", number_at(n, "ship", "scale_lambda", 28.5));
   }
   if (o.speed) n["ship"]["speed_m_s"] = text(*o.speed);
   if (!o.band.empty()) n["hull"]["band_m"] = flow_pair(o.band.at(0), o.band.at(1));
@@ -113,6 +399,18 @@ int make_case(const NewCaseOptions& o) {
   if (fs::exists(file) && !o.force)
     throw brash::InputError(file.string() + ": exists already (use --force to overwrite)");
   const bool created = !fs::exists(dir);
+  fs::path hull_copy;  // the hull file this call put into the case folder
+  if (own) {
+    const fs::path dest = dir / own->case_file_name;
+    const bool same = fs::exists(dest) && fs::equivalent(dest, own->stl);
+    if (!same && fs::exists(dest) && !o.force)
+      throw brash::InputError(dest.string() + ": exists already (use --force to overwrite)");
+    fs::create_directories(dir);
+    if (!same) {
+      fs::copy_file(own->stl, dest, fs::copy_options::overwrite_existing);
+      hull_copy = dest;
+    }
+  }
   fs::create_directories(dir);
   YAML::Emitter e;
   e << n;
@@ -123,11 +421,14 @@ int make_case(const NewCaseOptions& o) {
   }
   try {
     const brash::Case c = brash::load_case(file);
-    std::cout << fmt::format("brash-case: wrote {} (speed {} m/s, channel {} x {} m, d {} m, fluid {})\n",
+    if (own) print_own_hull(*own, c.ship.scale_lambda);
+    std::cout << fmt::format("brash-case: wrote {} (speed {} m/s, channel {} x {} m, d {} m, fluid {}{})\n",
                              file.string(), c.ship.speed_m_s, c.channel.length_m, c.channel.width_m,
-                             c.ice.diameter_mean_m, brash::to_string(c.fluid.model));
+                             c.ice.diameter_mean_m, brash::to_string(c.fluid.model),
+                             own ? fmt::format(", hull {}", own->case_file_name) : std::string());
   } catch (...) {
     fs::remove(file);
+    if (!hull_copy.empty()) fs::remove(hull_copy);
     if (created) fs::remove_all(dir);
     throw;
   }
@@ -199,7 +500,12 @@ int main(int argc, char** argv) {
   nw->add_option("--window", o.window, "averaging window START END [s]")->expected(2);
   nw->add_option("--band", o.band, "contact hull band BELOW ABOVE the waterline [m] (hull.band_m; deeper for faster "
                                    "ships: the bow pushes the ice deeper)")->expected(2);
-  nw->add_flag("--force", o.force, "overwrite an existing case.yaml");
+  nw->add_option("--hull", o.hull, "your own hull: STL or OBJ (other formats through meshio), model scale, metres, "
+                                 "x forward, keel at z = 0, centred on y = 0; checked, measured and copied into the "
+                                 "case folder (docs/own_hull.md)");
+  nw->add_option("--draft", o.draft, "with --hull: draft [m], the waterline's height above the keel");
+  nw->add_option("--lpp", o.lpp, "with --hull: length between perpendiculars [m] (default: the waterline length)");
+  nw->add_flag("--force", o.force, "overwrite an existing case.yaml (and hull file)");
 
   DeriveOptions d;
   CLI::App* dv = app.add_subcommand("derive", "write DIR/case.yaml: BASE with keys set to new values (docs/case_format.md)");
