@@ -138,6 +138,7 @@ long exit_total(const std::string& line) {
 nlohmann::json LiggghtsEngine::meta() const {
   return {{"engine_version", "LIGGGHTS 3.8.0 (Debian libliggghts) + fix icefluid"},
           {"ranks", ranks_},
+          {"launcher", launch_prefix_.empty() ? "none (one rank)" : launch_prefix_.substr(0, launch_prefix_.size() - 1)},
           {"particles", spheres_.size()}};  // the half channel's with speedups.symmetry_y
 }
 
@@ -243,7 +244,7 @@ long read_pid(const fs::path& file) {
 
 }  // namespace
 
-// Runs the engine (mpirun when ranks > 1) on the input script, copies its screen output to log.txt, reports
+// Runs the engine (under the MPI launcher when ranks > 1) on the input script, copies its screen output to log.txt, reports
 // each thermo line to the monitor and stops the engine (SIGTERM) when the monitor asks.
 run::Attempt LiggghtsEngine::advance(const fs::path& run_dir, const std::string& restart, run::Monitor& monitor) {
   std::string input = "in.lmp";
@@ -257,9 +258,8 @@ run::Attempt LiggghtsEngine::advance(const fs::path& run_dir, const std::string&
     input = "in_resume.lmp";
     run::write_atomic(run_dir / input, input_script(case_, box_, options_));
   }
-  // exec: the shell's pid becomes the engine's (mpirun's), so that a stop can signal it
-  std::string cmd = "cd " + run::shell_quote(run_dir) + " && echo $$ > engine.pid && exec ";
-  if (ranks_ > 1) cmd += fmt::format("mpirun --allow-run-as-root --oversubscribe -np {} ", ranks_);
+  // exec: the shell's pid becomes the engine's (the launcher's), so that a stop can signal it
+  std::string cmd = "cd " + run::shell_quote(run_dir) + " && echo $$ > engine.pid && exec " + launch_prefix_;
   cmd += run::shell_quote(run::executable_dir() / "brash-liggghts") + " -in " + input + " -log none 2>&1";
   std::ofstream log(run_dir / "log.txt", std::ios::app);
   FILE* pipe = ::popen(cmd.c_str(), "r");

@@ -1,5 +1,5 @@
 // The LIGGGHTS adapter of the run driver (brash/run/engine.hpp): the scene as a LIGGGHTS input script
-// (liggghts_input.h) run by `brash-liggghts` under mpirun, its thermo lines as progress, its raw hull-force and
+// (liggghts_input.h) run by `brash-liggghts` under an MPI launcher (mpi_launcher.h), its thermo lines as progress, its raw hull-force and
 // dump files turned into the run layout, its periodic restart files (restart/a.restart, restart/b.restart).
 #pragma once
 #include <filesystem>
@@ -15,7 +15,9 @@ namespace brash::liggghts {
 
 class LiggghtsEngine final : public run::Engine {
  public:
-  LiggghtsEngine(int ranks, double restart_every_s) : ranks_(ranks), restart_every_s_(restart_every_s) {}
+  // launch_prefix: the launcher's words before the engine's executable ("" for one rank; mpi_launcher.h)
+  LiggghtsEngine(int ranks, double restart_every_s, std::string launch_prefix)
+      : ranks_(ranks), restart_every_s_(restart_every_s), launch_prefix_(std::move(launch_prefix)) {}
   std::string name() const override { return "liggghts"; }
   std::string runner() const override { return "brash-liggghts-run"; }
   nlohmann::json meta() const override;
@@ -29,6 +31,7 @@ class LiggghtsEngine final : public run::Engine {
  private:
   int ranks_;
   double restart_every_s_;
+  std::string launch_prefix_;
   Case case_;
   std::vector<Sphere> spheres_;
   hull::Mesh full_mesh_, contact_mesh_;

@@ -2,6 +2,7 @@
 // (brash/run/driver.hpp: the run layout of docs/case_format.md, resume, progress, early stop, brash-post) with
 // the LIGGGHTS adapter (liggghts_engine.h). --rebuild-record rewrites a run's record from its raw files.
 #include <CLI/CLI.hpp>
+#include <cstdlib>
 #include <fmt/format.h>
 #include <fstream>
 #include <iostream>
@@ -11,6 +12,7 @@
 #include "brash/run/driver.hpp"
 #include "brash/run_layout.hpp"
 #include "liggghts_engine.h"
+#include "mpi_launcher.h"
 
 namespace fs = std::filesystem;
 
@@ -62,6 +64,14 @@ int main(int argc, char** argv) {
                                     "continue an interrupted run directory from its newest restart file");
   case_opt->excludes(resume_opt);
   app.add_option("--np", ranks, "MPI ranks")->check(CLI::Range(1, 1024));
+  std::string launcher;
+  bool oversubscribe = false;
+  app.add_option("--launcher", launcher,
+                 "MPI launcher for --np > 1 (default: $BRASH_MPI_LAUNCHER, else mpirun); {np} in it is the rank "
+                 "count, else -n N (srun) or -np N is appended (docs/clusters.md)");
+  app.add_flag("--oversubscribe", oversubscribe,
+               "let Open MPI's mpirun start more ranks than it counts cores (added by itself when --np exceeds the "
+               "CPUs this process may use)");
   app.add_option("--out", o.out_dir, "run directory (default: runs/<case>-liggghts-<model>-<stamp>)");
   app.add_option("--runs-root", o.runs_root, "where run directories are created");
   app.add_option("--duration", o.overrides.duration_s, "simulated time [s] (default: the case's run.duration_s)");
@@ -97,6 +107,15 @@ int main(int argc, char** argv) {
                  "--model/--treatment/--duration/--out\n";
     return 2;
   }
-  brash::liggghts::LiggghtsEngine engine(ranks, o.restart_every_s);
+  std::string prefix;
+  try {
+    const auto spec = brash::liggghts::detect_launch(
+        brash::liggghts::resolve_launcher(launcher, std::getenv("BRASH_MPI_LAUNCHER")), ranks, oversubscribe);
+    prefix = brash::liggghts::launch_prefix(spec);
+  } catch (const brash::InputError& e) {
+    std::cerr << "brash-liggghts-run: error: " << e.what() << "\n";
+    return 2;
+  }
+  brash::liggghts::LiggghtsEngine engine(ranks, o.restart_every_s, prefix);
   return brash::run::drive(engine, o);
 }
