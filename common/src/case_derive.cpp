@@ -80,7 +80,8 @@ bool given(const CaseOverrides& overrides, std::string_view key) {
 void fix_paths(YAML::Node root, const Case& base, const fs::path& base_dir, const CaseOverrides& overrides,
                const Case& derived) {
   if (!given(overrides, "hull.file")) {
-    const YAML::Node file = std::as_const(root)["hull"]["file"];
+    const YAML::Node hull = std::as_const(root)["hull"];  // a base without a hull section takes the defaults
+    const YAML::Node file = hull.IsDefined() && hull.IsMap() ? std::as_const(hull)["file"] : YAML::Node();
     // without the key the loader's default applies, a bare file name (the one the resolved file carries)
     const fs::path name = file.IsDefined() && file.IsScalar() ? fs::path(file.Scalar()) : base.hull.file.filename();
     std::error_code ec;

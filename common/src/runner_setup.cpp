@@ -53,8 +53,12 @@ Case load_case_with_overrides(const fs::path& case_file, const CaseOverrides& o,
   }
   if (set.empty()) return load_case(case_file);
   // through the case library, as `brash-case derive` (validated like a case file)
-  return parse_case(derive_case(case_file, set), fs::absolute(case_file).parent_path(),
-                    case_file.string() + " (with command-line overrides)");
+  try {
+    return parse_case(derive_case(case_file, set), fs::absolute(case_file).parent_path(),
+                      case_file.string() + " (with command-line overrides)");
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{} (with command-line overrides)", e.what()));
+  }
 }
 
 void prepare_case_inputs(const Case& c, const fs::path& case_file, const std::string& tag) {
