@@ -68,6 +68,11 @@ std::vector<PointSource> thin_ship_sources(const HalfBreadthGrid& g, double ship
 
 FlowTable::FlowTable(std::span<const PointSource> sources, const Vec3& lo, const Vec3& hi, double spacing_m,
                      double core_radius_m, bool mirror_y)
+    : FlowTable([&](const Vec3& p) { return induced_velocity(sources, p, core_radius_m); }, lo, hi, spacing_m,
+                mirror_y) {}
+
+FlowTable::FlowTable(const std::function<Vec3(const Vec3&)>& field, const Vec3& lo, const Vec3& hi,
+                     double spacing_m, bool mirror_y)
     : lo_(lo), hi_(hi), mirror_y_(mirror_y) {
   if (!(spacing_m > 0) || !((hi - lo).minCoeff() > 0))
     throw InputError("flow table: needs a box with hi > lo on every axis and a spacing > 0");
@@ -82,11 +87,26 @@ FlowTable::FlowTable(std::span<const PointSource> sources, const Vec3& lo, const
   for (int iz = 0; iz < n_.z(); ++iz)
     for (int iy = 0; iy < n_.y(); ++iy)
       for (int ix = 0; ix < n_.x(); ++ix) {
-        const Vec3 p = lo_ + Vec3(ix * h_.x(), iy * h_.y(), iz * h_.z());
-        const Vec3 u = induced_velocity(sources, p, core_radius_m);
+        const Vec3 u = field(lo_ + Vec3(ix * h_.x(), iy * h_.y(), iz * h_.z()));
         max_speed_ = std::max(max_speed_, u.norm());
         values_[k++] = u.x(), values_[k++] = u.y(), values_[k++] = u.z();
       }
+}
+
+FlowTable FlowTable::from_values(const Vec3& lo, const Vec3& hi, const Eigen::Vector3i& nodes, bool mirror_y,
+                                 std::vector<double> values) {
+  if (!((hi - lo).minCoeff() > 0) || nodes.minCoeff() < 2 ||
+      values.size() != 3 * static_cast<std::size_t>(nodes.prod()) || (mirror_y && lo.y() != 0.0))
+    throw InputError(
+        fmt::format("flow table: {} values do not make a table of {} x {} x {} nodes on a valid box",
+                    values.size(), nodes.x(), nodes.y(), nodes.z()));
+  FlowTable t;
+  t.lo_ = lo, t.hi_ = hi, t.n_ = nodes, t.mirror_y_ = mirror_y;
+  for (int a = 0; a < 3; ++a) t.h_[a] = (hi[a] - lo[a]) / (nodes[a] - 1), t.inv_h_[a] = 1.0 / t.h_[a];
+  for (std::size_t k = 0; k + 2 < values.size(); k += 3)
+    t.max_speed_ = std::max(t.max_speed_, Vec3(values[k], values[k + 1], values[k + 2]).norm());
+  t.values_ = std::move(values);
+  return t;
 }
 
 Vec3 FlowTable::at(const Vec3& p) const {

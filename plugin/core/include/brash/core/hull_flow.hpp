@@ -15,6 +15,7 @@
 // in the hull frame (FlowTable): per sphere and step the engine pays one trilinear interpolation.
 #pragma once
 #include <Eigen/Core>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -52,6 +53,13 @@ class FlowTable {
   FlowTable() = default;
   FlowTable(std::span<const PointSource> sources, const Vec3& lo, const Vec3& hi, double spacing_m,
             double core_radius_m, bool mirror_y);
+  // The same grid filled with any field (the panel flow, panel_flow.hpp).
+  FlowTable(const std::function<Vec3(const Vec3&)>& field, const Vec3& lo, const Vec3& hi, double spacing_m,
+            bool mirror_y);
+  // A table from its node values (a cached table read back): >= 2 nodes per axis, 3 values per node, x
+  // fastest. Throws brash::InputError when the sizes disagree.
+  static FlowTable from_values(const Vec3& lo, const Vec3& hi, const Eigen::Vector3i& nodes, bool mirror_y,
+                               std::vector<double> values);
 
   // trilinear interpolation; zero outside the box (and for a default-constructed table)
   Vec3 at(const Vec3& p) const;
@@ -62,6 +70,8 @@ class FlowTable {
   Eigen::Vector3i nodes() const { return n_; }
   Vec3 spacing() const { return h_; }
   double max_speed_m_s() const { return max_speed_; }
+  bool mirror_y() const { return mirror_y_; }
+  const std::vector<double>& values() const { return values_; }
 
  private:
   Vec3 lo_ = Vec3::Zero(), hi_ = Vec3::Zero(), h_ = Vec3::Ones(), inv_h_ = Vec3::Ones();
