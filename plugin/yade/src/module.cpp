@@ -10,8 +10,10 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <memory>
 #include <numbers>
@@ -91,21 +93,26 @@ class Fluid {
 
   // radius (n), mass (n), pos/vel/force (n,3): force = every other force YADE holds for the sphere
   // (contacts). Returns the force to add with O.forces.addF so that the sphere's total becomes
-  // (force + fluid) * scale (implicit added mass) or force + fluid (explicit / no added mass).
-  // Gravity is part of `fluid` when apply_gravity is set (YADE's NewtonIntegrator.gravity must be 0).
+  // (force + m g_engine + fluid) * scale (implicit added mass) or force + m g_engine + fluid (explicit / no
+  // added mass), g_engine being the gravity NewtonIntegrator adds as an acceleration itself (zero when the
+  // fluid applies gravity): the engine's gravity is one of the "other" forces the scale acts on, as in the
+  // core's reference integrator (engine_gravity), and the correction takes m g_engine back out.
   py::array_t<double> correction(const Array& radius, const Array& mass, const Array& pos, const Array& vel,
-                                 const Array& force, double dt) {
+                                 const Array& force, double dt, const std::array<double, 3>& engine_gravity) {
     const py::ssize_t n = radius.ndim() == 1 ? radius.shape(0) : -1;
     const double* r = vec_n(radius, n, "radius");
     const double* m = vec_n(mass, n, "mass");
     const auto* x = mat_n3(pos, n, "pos");
     const auto* v = mat_n3(vel, n, "vel");
     const auto* f = mat_n3(force, n, "force");
+    check_engine_gravity(engine_gravity);
+    const double* ge = engine_gravity.data();
     if (state_.size() != static_cast<std::size_t>(n)) {
-      if (!state_.empty()) throw std::invalid_argument("Fluid.correction: the number of spheres changed");
-      state_.assign(n, FluidState{});
-      fraction_ = py::array_t<double>(n);
-      ca_ = py::array_t<double>({n, py::ssize_t(3)});
+      if (!state_.empty())
+        throw std::invalid_argument("Fluid.correction: the number of spheres changed (" +
+                                    std::to_string(state_.size()) + " -> " + std::to_string(n) +
+                                    "): call remap() when spheres come or go");
+      resize(n);
     }
     py::array_t<double> out({n, py::ssize_t(3)});
     auto* o = reinterpret_cast<double(*)[3]>(out.mutable_data());
@@ -117,7 +124,8 @@ class Fluid {
         const Vec3 vi(v[i][0], v[i][1], v[i][2]);
         const FluidOutput fo = evaluate(p_, Sphere{r[i], m[i], Vec3(x[i][0], x[i][1], x[i][2]), vi}, state_[i], dt);
         for (int k = 0; k < 3; ++k) {
-          o[i][k] = scaled_total_force(f[i][k], fo.force_N[k], fo.scale[k]) - f[i][k];
+          const double other = f[i][k] + m[i] * ge[k];
+          o[i][k] = scaled_total_force(other, fo.force_N[k], fo.scale[k]) - other;
           ca[i][k] = fo.ca[k];
         }
         fr[i] = fo.immersion.fraction;
@@ -129,7 +137,8 @@ class Fluid {
 
   // Same, for callers that hold YADE Vector3 objects (anything indexable by 0..2): lists of length n.
   py::array_t<double> correction_seq(const Array& radius, const Array& mass, const py::sequence& pos,
-                                     const py::sequence& vel, const py::sequence& force, double dt) {
+                                     const py::sequence& vel, const py::sequence& force, double dt,
+                                     const std::array<double, 3>& engine_gravity) {
     const py::ssize_t n = radius.ndim() == 1 ? radius.shape(0) : -1;
     auto to_array = [n](const py::sequence& s, const char* name) {
       if (static_cast<py::ssize_t>(py::len(s)) != n)
@@ -139,18 +148,36 @@ class Fluid {
       for (py::ssize_t i = 0; i < n; ++i) read3(s[i], d[i]);
       return a;
     };
-    return correction(radius, mass, to_array(pos, "pos"), to_array(vel, "vel"), to_array(force, "force"), dt);
+    return correction(radius, mass, to_array(pos, "pos"), to_array(vel, "vel"), to_array(force, "force"), dt,
+                      engine_gravity);
   }
 
   // The whole YADE step in one call (the fast path of the PyRunner): for sphere i, read
   // states[i].pos / .vel and forces.f(ids[i], True) (contacts, valid after InteractionLoop), evaluate
   // the core, and forces.addF(ids[i], correction). `states` are YADE State objects cached once (they
   // stay the live state of their bodies); radius/mass are per-sphere arrays in the same order.
-  void apply(const Array& radius, const Array& mass, const py::list& states, const py::list& ids,
-             const py::object& forces, double dt) {
+  // engine_gravity: NewtonIntegrator.gravity (see correction()). bodies: the spheres' cached Body objects or
+  // None; YADE sets the id of an erased body to -1, so a body whose id is no longer ids[i] is gone: then
+  // nothing is applied and the positions of the gone spheres are returned (the caller drops them with
+  // remap() and calls again). Returns None otherwise.
+  py::object apply(const Array& radius, const Array& mass, const py::list& states, const py::list& ids,
+                   const py::object& forces, double dt, const std::array<double, 3>& engine_gravity,
+                   const py::object& bodies) {
     const py::ssize_t n = radius.ndim() == 1 ? radius.shape(0) : -1;
     if (static_cast<py::ssize_t>(py::len(states)) != n || static_cast<py::ssize_t>(py::len(ids)) != n)
       throw std::invalid_argument("Fluid.apply: radius, mass, states and ids must have the same length");
+    if (!bodies.is_none()) {
+      const py::list bl = bodies.cast<py::list>();
+      if (static_cast<py::ssize_t>(py::len(bl)) != n)
+        throw std::invalid_argument("Fluid.apply: bodies and ids must have the same length");
+      const py::str s_id("id");
+      py::list gone;
+      for (py::ssize_t i = 0; i < n; ++i) {
+        const long id = py::handle(PyList_GET_ITEM(bl.ptr(), i)).attr(s_id).cast<long>();
+        if (id != py::handle(PyList_GET_ITEM(ids.ptr(), i)).cast<long>()) gone.append(i);
+      }
+      if (py::len(gone) > 0) return gone;
+    }
     Array pos({n, py::ssize_t(3)}), vel({n, py::ssize_t(3)}), frc({n, py::ssize_t(3)});
     auto* x = reinterpret_cast<double(*)[3]>(pos.mutable_data());
     auto* v = reinterpret_cast<double(*)[3]>(vel.mutable_data());
@@ -164,10 +191,61 @@ class Fluid {
       read3(st.attr(s_vel), v[i]);
       read3(get_f(py::handle(PyList_GET_ITEM(ids.ptr(), i)), sync), f[i]);
     }
-    const auto corr = correction(radius, mass, pos, vel, frc, dt);
+    const auto corr = correction(radius, mass, pos, vel, frc, dt, engine_gravity);
     const auto* c = reinterpret_cast<const double(*)[3]>(corr.data());
     for (py::ssize_t i = 0; i < n; ++i)
       add_f(py::handle(PyList_GET_ITEM(ids.ptr(), i)), py::make_tuple(c[i][0], c[i][1], c[i][2]));
+    return py::none();
+  }
+
+  // The spheres changed: sphere i of the new order is old sphere old_index[i] (its state kept), or new (-1:
+  // no previous velocity yet).
+  void remap(const std::vector<long>& old_index) {
+    std::vector<FluidState> next(old_index.size());
+    for (std::size_t i = 0; i < old_index.size(); ++i) {
+      const long k = old_index[i];
+      if (k >= 0) {
+        if (static_cast<std::size_t>(k) >= state_.size())
+          throw std::invalid_argument("Fluid.remap: old index " + std::to_string(k) + " out of range (" +
+                                      std::to_string(state_.size()) + " spheres)");
+        next[i] = state_[k];
+      }
+    }
+    state_ = std::move(next);
+    resize_outputs(static_cast<py::ssize_t>(state_.size()));
+  }
+
+  // The per-sphere state for a restart: previous velocities (n,3) and whether each has one (n).
+  py::tuple get_state() const {
+    const auto n = static_cast<py::ssize_t>(state_.size());
+    py::array_t<double> v({n, py::ssize_t(3)});
+    py::array_t<bool> has(n);
+    auto* vd = reinterpret_cast<double(*)[3]>(v.mutable_data());
+    bool* hd = has.mutable_data();
+    for (py::ssize_t i = 0; i < n; ++i) {
+      for (int k = 0; k < 3; ++k) vd[i][k] = state_[i].velocity_prev_m_s[k];
+      hd[i] = state_[i].has_prev;
+    }
+    return py::make_tuple(v, has);
+  }
+
+  void set_state(const Array& velocity_prev, const py::array_t<bool, py::array::c_style | py::array::forcecast>& has_prev) {
+    const py::ssize_t n = has_prev.ndim() == 1 ? has_prev.shape(0) : -1;
+    if (n < 0) throw std::invalid_argument("Fluid.set_state: has_prev: expected shape (n,)");
+    const auto* v = mat_n3(velocity_prev, n, "velocity_prev");
+    const bool* h = has_prev.data();
+    state_.assign(n, FluidState{});
+    for (py::ssize_t i = 0; i < n; ++i) state_[i] = FluidState{Vec3(v[i][0], v[i][1], v[i][2]), h[i]};
+    resize_outputs(n);
+  }
+
+  // Who applies gravity, and g (also the buoyancy's): the adapter follows NewtonIntegrator.gravity with it.
+  void configure_gravity(double g, bool apply_gravity) {
+    FluidParams p = p_;
+    p.gravity_m_s2 = g;
+    p.apply_gravity = apply_gravity;
+    p.validate("brash_yade.Fluid.configure_gravity");
+    p_ = std::move(p);
   }
 
   const py::array_t<double>& fraction() const { return fraction_; }
@@ -177,6 +255,36 @@ class Fluid {
   const FluidParams& params() const { return p_; }
 
  private:
+  void resize(py::ssize_t n) {
+    state_.assign(n, FluidState{});
+    resize_outputs(n);
+  }
+  void resize_outputs(py::ssize_t n) {
+    fraction_ = py::array_t<double>(n);
+    ca_ = py::array_t<double>({n, py::ssize_t(3)});
+    std::fill_n(fraction_.mutable_data(), n, 0.0);
+    std::fill_n(ca_.mutable_data(), 3 * n, 0.0);
+  }
+  // Gravity added by the integrator: none, or along -z (buoyancy acts along +z) with the fluid's g, and never
+  // on top of the fluid's own gravity.
+  void check_engine_gravity(const std::array<double, 3>& g) const {
+    if (g[0] == 0 && g[1] == 0 && g[2] == 0) return;
+    if (p_.apply_gravity)
+      throw std::invalid_argument("brash_yade.Fluid: the integrator applies gravity and so does the fluid "
+                                  "(apply_gravity): gravity would count twice");
+    if (g[0] != 0 || g[1] != 0 || !(g[2] < 0))
+      throw std::invalid_argument(fmt_vec("brash_yade.Fluid: engine gravity (", g) +
+                                  ") must point along -z (buoyancy acts along +z)");
+    if (std::abs(-g[2] - p_.gravity_m_s2) > 1e-12 * p_.gravity_m_s2)
+      throw std::invalid_argument(fmt_vec("brash_yade.Fluid: engine gravity (", g) + ") differs from the fluid's g = " +
+                                  std::to_string(p_.gravity_m_s2) + " m/s^2 (buoyancy would not balance the weight)");
+  }
+  static std::string fmt_vec(const std::string& head, const std::array<double, 3>& g) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%.9g, %.9g, %.9g", g[0], g[1], g[2]);
+    return head + buf;
+  }
+
   FluidParams p_;
   std::vector<FluidState> state_;
   py::array_t<double> fraction_{0}, ca_{std::vector<py::ssize_t>{0, 3}};
@@ -293,13 +401,24 @@ PYBIND11_MODULE(brash_yade, mod) {
           py::arg("case_file"), py::arg("apply_gravity") = true,
           "the fluid of a case.yaml (water.*, fluid.*) through brash::fluid_params, the mapping every engine uses")
       .def("correction", &Fluid::correction, py::arg("radius"), py::arg("mass"), py::arg("pos"), py::arg("vel"),
-           py::arg("force"), py::arg("dt"),
-           "force to add per sphere (n,3) so the total is (force + fluid) * scale")
+           py::arg("force"), py::arg("dt"), py::arg("engine_gravity") = std::array<double, 3>{0, 0, 0},
+           "force to add per sphere (n,3) so the total is (force + m g_engine + fluid) * scale - m g_engine")
       .def("correction_seq", &Fluid::correction_seq, py::arg("radius"), py::arg("mass"), py::arg("pos"),
-           py::arg("vel"), py::arg("force"), py::arg("dt"), "correction() for lists of Vector3-like objects")
+           py::arg("vel"), py::arg("force"), py::arg("dt"),
+           py::arg("engine_gravity") = std::array<double, 3>{0, 0, 0},
+           "correction() for lists of Vector3-like objects")
       .def("apply", &Fluid::apply, py::arg("radius"), py::arg("mass"), py::arg("states"), py::arg("ids"),
-           py::arg("forces"), py::arg("dt"),
-           "read pos/vel/contact force of each sphere, add the fluid correction with forces.addF")
+           py::arg("forces"), py::arg("dt"), py::arg("engine_gravity") = std::array<double, 3>{0, 0, 0},
+           py::arg("bodies") = py::none(),
+           "read pos/vel/contact force of each sphere, add the fluid correction with forces.addF; with bodies, "
+           "returns the positions of erased spheres (and applies nothing) or None")
+      .def("remap", &Fluid::remap, py::arg("old_index"),
+           "new sphere order: old_index[i] = the old position of sphere i, or -1 for a new sphere")
+      .def("get_state", &Fluid::get_state, "(previous velocities (n,3), has_prev (n,)) for a restart")
+      .def("set_state", &Fluid::set_state, py::arg("velocity_prev"), py::arg("has_prev"),
+           "restore what get_state() returned")
+      .def("configure_gravity", &Fluid::configure_gravity, py::arg("g"), py::arg("apply_gravity"),
+           "set g (buoyancy and weight) and whether the fluid applies the weight itself")
       .def_property_readonly("fraction", &Fluid::fraction, "submerged fraction of each sphere at the last call")
       .def_property_readonly("ca", &Fluid::ca, "added-mass coefficients (n,3) used at the last call")
       .def("reset", &Fluid::reset, "forget the per-sphere state (previous velocity)")
