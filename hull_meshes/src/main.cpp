@@ -1,15 +1,18 @@
 // brash-hull: generate the JBC hull STL, or check any hull mesh and print hydrostatics and FSICR
 // parameters as JSON.
 #include <brash/error.hpp>
+#include <brash/hull/flow.hpp>
 #include <brash/hull/hydrostatics.hpp>
 #include <brash/hull/jbc.hpp>
 #include <brash/hull/mesh.hpp>
+#include <brash/hull/panel_flow.hpp>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <iostream>
 #include <string_view>
@@ -86,6 +89,37 @@ int run_check(const std::filesystem::path& file, double draft, double lpp, const
   return good ? 0 : 2;
 }
 
+// The water's flow (still-water frame) along a line in the hull frame (z = 0 at the water level), as CSV: the
+// panel flow evaluated directly, the thin-ship flow from its table (what the engines read).
+int run_flow(const std::filesystem::path& file, double draft, double speed, const std::string& method,
+             const std::vector<double>& line, int points, int max_panels, const std::string& out) {
+  const Mesh m = read_mesh(file);
+  if (line.size() != 6 || points < 2) throw brash::InputError("--line needs x0 y0 z0 x1 y1 z1 and --points >= 2");
+  std::function<Eigen::Vector3d(const Eigen::Vector3d&)> field;
+  brash::core::PanelSolution panel;
+  brash::core::FlowTable table;
+  if (method == "panel") {
+    panel = panel_solution(m, draft, speed, {.max_panels = max_panels});
+    field = [&](const Eigen::Vector3d& p) { return brash::core::panel_velocity(panel, p); };
+  } else if (method == "thin_ship") {
+    table = thin_ship_flow(m, draft, speed);
+    field = [&](const Eigen::Vector3d& p) { return table.at(p); };
+  } else {
+    throw brash::InputError(fmt::format("--method {}: expected panel or thin_ship", method));
+  }
+  const Eigen::Vector3d a(line[0], line[1], line[2]), b(line[3], line[4], line[5]);
+  std::ofstream file_out;
+  if (!out.empty()) file_out.open(out);
+  std::ostream& os = out.empty() ? std::cout : file_out;
+  os << "s_m,x_m,y_m,z_m,ux_m_s,uy_m_s,uz_m_s,relative_speed_over_U\n";
+  for (int k = 0; k < points; ++k) {
+    const Eigen::Vector3d p = a + (b - a) * k / (points - 1.0), u = field(p);
+    os << fmt::format("{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n", (p - a).norm(), p.x(), p.y(),
+                      p.z(), u.x(), u.y(), u.z(), (u - Eigen::Vector3d(speed, 0, 0)).norm() / std::abs(speed));
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -109,14 +143,30 @@ int main(int argc, char** argv) {
   check->add_option("--lpp", check_lpp, "length between perpendiculars in m (default: waterline length)");
   check->add_option("--json", json_out, "also write the JSON here");
 
+  auto* flow = app.add_subcommand("flow", "the water's flow around the hull along a line, as CSV");
+  std::string method = "panel", flow_out;
+  double speed = 0;
+  std::vector<double> line;
+  int points = 101, max_panels = PanelFlowSettings{}.max_panels;
+  flow->add_option("file", file, "hull mesh (keel at z = 0)")->required();
+  flow->add_option("--draft", draft, "draft in m (the water level z = draft of the mesh)")->required();
+  flow->add_option("--speed", speed, "ship speed along +x in m/s")->required();
+  flow->add_option("--method", method, "panel | thin_ship");
+  flow->add_option("--line", line, "x0 y0 z0 x1 y1 z1 in m, z = 0 at the water level")->expected(6)->required();
+  flow->add_option("--points", points, "points along the line");
+  flow->add_option("--max-panels", max_panels, "panel method: panels (unknowns)");
+  flow->add_option("--out", flow_out, "CSV file (default: standard output)");
+
   // CLI11 only says "A subcommand is required" for a mistyped command: name it.
-  if (argc > 1 && argv[1][0] != '-' && std::string_view(argv[1]) != "jbc" && std::string_view(argv[1]) != "check") {
-    std::cerr << "brash-hull: unknown command '" << argv[1] << "' (expected jbc | check; see --help)\n";
+  if (argc > 1 && argv[1][0] != '-' && std::string_view(argv[1]) != "jbc" && std::string_view(argv[1]) != "check" &&
+      std::string_view(argv[1]) != "flow") {
+    std::cerr << "brash-hull: unknown command '" << argv[1] << "' (expected jbc | check | flow; see --help)\n";
     return 109;
   }
   CLI11_PARSE(app, argc, argv);
   try {
     if (jbc->parsed()) return run_jbc(out, lpp, grid, data);
+    if (flow->parsed()) return run_flow(file, draft, speed, method, line, points, max_panels, flow_out);
     return run_check(file, draft, check_lpp, json_out);
   } catch (const std::exception& e) {
     std::cerr << "brash-hull: error: " << e.what() << "\n";

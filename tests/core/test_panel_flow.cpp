@@ -168,9 +168,10 @@ TEST(PanelFlow, NoFluxThroughTheBody) {
   double total = 0;
   for (std::size_t j = 0; j < s.body.panels(); ++j) total += std::abs(s.sigma_m_s(j)) * s.area_m2[j];
   EXPECT_LT(std::abs(core::panel_net_flux(s)), 1e-3 * total);
-  // the normal velocity relative to the body over each panel, from the field itself
+  // the normal velocity relative to the body over each panel, from the field itself (which sums far panels as
+  // point sources per point, the system per panel pair: they differ by O((size / distance)^2))
   for (std::size_t i = 0; i < s.body.panels(); ++i)
-    EXPECT_NEAR(core::panel_relative_normal_velocity(s, i), 0.0, 1e-9 * kU);
+    EXPECT_NEAR(core::panel_relative_normal_velocity(s, i), 0.0, 1e-4 * kU);
 }
 
 std::vector<Triangle> lower_half(const std::vector<Triangle>& all) {

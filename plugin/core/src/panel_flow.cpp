@@ -32,22 +32,16 @@ Vec3 panel_unit_velocity(const PanelSolution& s, std::size_t j, const Vec3& p) {
   const double far = s.settings.far_factor;
   if ((p - s.centroid_m[j]).norm() > far * 2.0 * s.radius_m[j])
     return point_source(s.area_m2[j], s.centroid_m[j], p);
-  Vec3 u = Vec3::Zero();
+  Vec3 u = Vec3::Zero(), far_sum = Vec3::Zero();
   for (std::size_t k = s.body.first[j]; k < s.body.first[j + 1]; ++k) {
-    const Triangle& t = s.body.triangles[k];
-    const Vec3 c = triangle_centroid(t);
-    const double diam =
-        std::max({(t.v[1] - t.v[0]).norm(), (t.v[2] - t.v[1]).norm(), (t.v[0] - t.v[2]).norm()});
-    u += (p - c).norm() > far * diam ? point_source(triangle_area(t), c, p) : triangle_source_velocity(t, p);
+    const Vec3 d = p - s.triangle_centroid_m[k];
+    const double r2 = d.squaredNorm();
+    if (r2 > s.triangle_reach2_m2[k])
+      far_sum += d * (s.triangle_area_m2[k] / (r2 * std::sqrt(r2)));
+    else
+      u += triangle_source_velocity(s.body.triangles[k], p);
   }
-  return u;
-}
-
-// ... and with its mirror image about z = 0 for a double body: the image's field at p is the mirror of the
-// panel's field at the mirrored point
-Vec3 panel_influence(const PanelSolution& s, std::size_t j, const Vec3& p) {
-  Vec3 u = panel_unit_velocity(s, j, p);
-  if (s.body.mirror_z) u += mirror(panel_unit_velocity(s, j, mirror(p)));
+  u += far_sum * kInv4Pi;
   return u;
 }
 
@@ -56,6 +50,11 @@ void panel_geometry(PanelSolution& s) {
   const std::size_t n = s.body.panels();
   s.area_m2.assign(n, 0.0), s.radius_m.assign(n, 0.0);
   s.centroid_m.assign(n, Vec3::Zero()), s.normal.assign(n, Vec3::Zero());
+  for (const Triangle& t : s.body.triangles) {
+    const double edge = std::max({(t.v[1] - t.v[0]).norm(), (t.v[2] - t.v[1]).norm(), (t.v[0] - t.v[2]).norm()});
+    s.triangle_centroid_m.push_back(triangle_centroid(t)), s.triangle_area_m2.push_back(triangle_area(t));
+    s.triangle_reach2_m2.push_back(std::pow(s.settings.far_factor * edge, 2));
+  }
   for (std::size_t j = 0; j < n; ++j) {
     const std::size_t b = s.body.first[j], e = s.body.first[j + 1];
     for (std::size_t k = b; k < e; ++k) {
@@ -92,6 +91,26 @@ std::vector<FluxPoint> flux_points(const PanelSolution& s, std::size_t i) {
       out.push_back({(4.0 * t.v[v] + t.v[(v + 1) % 3] + t.v[(v + 2) % 3]) / 6.0, wn / 3.0});
   }
   return out;
+}
+
+// Entry (i, j) of the system: the flux of panel j's unit density (and its image) through panel i, by panel
+// i's quadrature; for a pair far apart (beyond far_factor diameters of either) panel j is a point source and
+// panel i's flux the mean normal at its centroid.
+double system_entry(const PanelSolution& s, std::size_t i, const std::vector<FluxPoint>& points,
+                    const Vec3& mean_normal, std::size_t j) {
+  const double reach = s.settings.far_factor * 2.0 * std::max(s.radius_m[i], s.radius_m[j]);
+  double a = 0;
+  for (int side = 0; side < (s.body.mirror_z ? 2 : 1); ++side) {
+    auto image = [&](const Vec3& v) { return side == 0 ? v : mirror(v); };
+    const Vec3 ci = image(s.centroid_m[i]);
+    if ((ci - s.centroid_m[j]).norm() > reach) {
+      a += mean_normal.dot(image(point_source(s.area_m2[j], s.centroid_m[j], ci)));
+      continue;
+    }
+    for (const FluxPoint& q : points)
+      a += q.weighted_normal.dot(image(panel_unit_velocity(s, j, image(q.p))));
+  }
+  return a;
 }
 
 }  // namespace
@@ -153,11 +172,13 @@ PanelSolution solve_panel_flow(PanelBody body, const Vec3& body_velocity_m_s, co
   // no flux through any panel: sum_k w_k n_k . (sum_j sigma_j u_j(p_k) - V) = 0
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
-  for (std::size_t i = 0; i < n; ++i)
-    for (const FluxPoint& q : flux_points(s, i)) {
-      for (std::size_t j = 0; j < n; ++j) a(i, j) += q.weighted_normal.dot(panel_influence(s, j, q.p));
-      rhs(i) += q.weighted_normal.dot(body_velocity_m_s);
-    }
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::vector<FluxPoint> points = flux_points(s, i);
+    Vec3 mean_normal = Vec3::Zero();
+    for (const FluxPoint& q : points) mean_normal += q.weighted_normal;
+    for (std::size_t j = 0; j < n; ++j) a(i, j) = system_entry(s, i, points, mean_normal, j);
+    rhs(i) = mean_normal.dot(body_velocity_m_s);
+  }
   s.sigma_m_s = a.partialPivLu().solve(rhs);
   const double residual = (a * s.sigma_m_s - rhs).norm(), scale = rhs.norm() + 1e-300;
   if (!s.sigma_m_s.allFinite() || residual > 1e-6 * scale)

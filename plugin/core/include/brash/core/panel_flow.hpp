@@ -69,6 +69,9 @@ struct PanelSolution {
   std::vector<Vec3> normal, centroid_m;
   std::vector<double> area_m2, radius_m;
   Eigen::VectorXd sigma_m_s;  // source density per panel
+  // per triangle: centroid, area, squared reach of its exact field ((far_factor x longest edge)^2)
+  std::vector<Vec3> triangle_centroid_m;
+  std::vector<double> triangle_area_m2, triangle_reach2_m2;
 };
 
 // The flow of a body moving at body_velocity_m_s through still water. Throws brash::InputError on an empty

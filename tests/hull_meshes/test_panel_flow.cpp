@@ -1,0 +1,146 @@
+// The hull side of the panel flow (panel_flow.hpp): the waterline cut, the panels grouped from a fine mesh,
+// the double body of a half-submerged sphere against the whole sphere's closed form, the table file, and on
+// the JBC the stagnation at the stem that the thin-ship sheet cannot give.
+#include <gtest/gtest.h>
+
+#include <brash/hull/flow.hpp>
+#include <brash/hull/panel_flow.hpp>
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+#include "../core/panel_meshes.hpp"
+#include "brash/error.hpp"
+
+#ifndef BRASH_JBC_MODEL_STL
+#error "BRASH_JBC_MODEL_STL must be defined by the build"
+#endif
+
+namespace {
+
+using brash::core::Triangle;
+using brash::core::Vec3;
+namespace core = brash::core;
+namespace hull = brash::hull;
+
+constexpr double kU = 0.482;
+
+hull::Mesh mesh_of(const std::vector<Triangle>& tris, const Vec3& shift) {
+  hull::Mesh m;
+  for (const Triangle& t : tris) {
+    const int k = static_cast<int>(m.vertices.size());
+    for (const Vec3& v : t.v) m.vertices.push_back(v + shift);
+    m.faces.push_back({k, k + 1, k + 2});
+  }
+  return m;
+}
+
+// a sphere of radius a moving at U e_x (Lamb §92): the still-water flow
+Vec3 sphere_exact(const Vec3& p, double a) {
+  const double r = p.norm();
+  return kU * a * a * a / 2 * (3 * p.x() * p / std::pow(r, 5) - Vec3::UnitX() / std::pow(r, 3));
+}
+
+// the largest |u - exact| / U at 1.1 and 2 radii over directions below the water
+double sphere_error(const core::PanelSolution& s, double a) {
+  double e = 0;
+  for (const Triangle& t : brash::test::icosphere(2)) {
+    const Vec3 d = core::triangle_centroid(t).normalized();
+    if (d.z() > -0.05) continue;
+    for (double f : {1.1, 2.0})
+      e = std::max(e, (core::panel_velocity(s, f * a * d) - sphere_exact(f * a * d, a)).norm() / kU);
+  }
+  return e;
+}
+
+TEST(PanelFlowHull, CutAtTheWaterlineKeepsHalfTheSphere) {
+  const double a = 0.3, water = 0.5;
+  const std::vector<Triangle> sphere = brash::test::scaled(brash::test::icosphere(3), Vec3::Constant(a));
+  double whole = 0, wetted = 0;
+  for (const Triangle& t : sphere) whole += core::triangle_area(t);
+  const std::vector<Triangle> w = hull::wetted_triangles(mesh_of(sphere, Vec3(0, 0, water)), water);
+  for (const Triangle& t : w) {
+    wetted += core::triangle_area(t);
+    for (const Vec3& v : t.v) ASSERT_LE(v.z(), 1e-12);
+    EXPECT_GT(core::triangle_normal(t).dot(core::triangle_centroid(t)), 0.0);  // still outward
+  }
+  EXPECT_NEAR(wetted, whole / 2, 1e-3 * whole);
+  EXPECT_GT(w.size(), sphere.size() / 2);  // the triangles across the waterline were cut, not dropped
+}
+
+TEST(PanelFlowHull, HalfSubmergedSphereWithItsMirrorIsTheWholeSphere) {
+  const double a = 0.3, water = 0.5;
+  const hull::Mesh m =
+      mesh_of(brash::test::scaled(brash::test::icosphere(3), Vec3::Constant(a)), Vec3(0, 0, water));
+  const core::PanelSolution s = hull::panel_solution(m, water, kU, {.max_panels = 2000});
+  EXPECT_TRUE(s.body.mirror_z);
+  const double e = sphere_error(s, a);
+  RecordProperty("error", std::to_string(e));
+  EXPECT_LT(e, 0.01);
+  EXPECT_NEAR(core::panel_velocity(s, Vec3(0.4, 0.1, 0.0)).z(), 0.0, 1e-12);  // a rigid lid
+}
+
+TEST(PanelFlowHull, GroupedPanelsOfAFineMeshMatchTheClosedForm) {
+  // 2560 wetted triangles in 640 panels: the grouping keeps the exact geometry with a quarter of the unknowns
+  const double a = 0.3;
+  const hull::Mesh m =
+      mesh_of(brash::test::scaled(brash::test::icosphere(4), Vec3::Constant(a)), Vec3::Zero());
+  const core::PanelSolution s = hull::panel_solution(m, 0.0, kU, {.max_panels = 640});
+  EXPECT_EQ(s.body.panels(), 640u);
+  const double e = sphere_error(s, a);
+  RecordProperty("error", std::to_string(e));
+  EXPECT_LT(e, 0.01);
+}
+
+TEST(PanelFlowHull, TableFileRoundTripAndKey) {
+  const hull::Mesh m =
+      mesh_of(brash::test::scaled(brash::test::icosphere(2), Vec3::Constant(0.3)), Vec3::Zero());
+  const core::FlowTable t = hull::panel_flow(m, 0.0, kU, {.table_spacing_fraction_of_draft = 0.5});
+  const auto file = std::filesystem::temp_directory_path() / "brash_test_panel_flow.bin";
+  hull::write_flow_table(file, t, "key 1");
+  const auto back = hull::read_flow_table(file, "key 1");
+  ASSERT_TRUE(back.has_value());
+  EXPECT_EQ(back->values(), t.values());
+  EXPECT_EQ(back->nodes(), t.nodes());
+  EXPECT_EQ(back->at(Vec3(0.35, -0.1, -0.1)), t.at(Vec3(0.35, -0.1, -0.1)));
+  EXPECT_FALSE(hull::read_flow_table(file, "key 2").has_value());
+  EXPECT_FALSE(hull::read_flow_table(file.string() + ".missing", "key 1").has_value());
+  std::filesystem::remove(file);
+}
+
+TEST(PanelFlowHull, RefusesAHullOutOfTheWater) {
+  const hull::Mesh m = mesh_of(brash::test::icosphere(1), Vec3::Zero());
+  EXPECT_THROW(hull::panel_solution(m, 2.0, kU), brash::InputError);
+  EXPECT_THROW(hull::panel_solution(m, -2.0, kU), brash::InputError);
+}
+
+// The JBC model at its draft: towards the stem along the centre line at the waterline, the water ahead moves
+// more and more with the hull (stagnation: the relative speed falls towards 0); the thin-ship sheet, a smoothed
+// centre-plane source, keeps about half the relative flow there. (Closer than ~2 cm, a panel's size at the stem,
+// the first-order panels' own near field shows.)
+TEST(PanelFlowHull, JbcStemIsAStagnationPoint) {
+  const double draft = 0.4125;
+  const hull::Mesh jbc = hull::read_mesh(BRASH_JBC_MODEL_STL);
+  const core::PanelSolution s = hull::panel_solution(jbc, draft, kU);
+  double x_stem = -1e9;  // the stem at the waterline: the foremost wetted point near z = 0 and y = 0
+  for (const Triangle& t : s.body.triangles)
+    for (const Vec3& v : t.v)
+      if (v.z() > -0.005 && std::abs(v.y()) < 0.01) x_stem = std::max(x_stem, v.x());
+  const core::FlowTable thin = hull::thin_ship_flow(jbc, draft, kU);
+  auto relative = [&](const Vec3& u) { return (u - kU * Vec3::UnitX()).norm() / kU; };
+  double previous = 1.0;
+  for (double ahead : {0.2, 0.1, 0.05, 0.025}) {
+    const Vec3 p(x_stem + ahead, 0.0, -0.01);
+    const double panel_rel = relative(core::panel_velocity(s, p)), thin_rel = relative(thin.at(p));
+    RecordProperty("panel_relative_" + std::to_string(ahead), std::to_string(panel_rel));
+    RecordProperty("thin_ship_relative_" + std::to_string(ahead), std::to_string(thin_rel));
+    EXPECT_LT(panel_rel, previous) << ahead;
+    EXPECT_GT(thin_rel, 0.44) << ahead;
+    previous = panel_rel;
+  }
+  EXPECT_LT(previous, 0.3);  // 2.5 cm ahead of the stem
+  // and far ahead both fade to still water
+  EXPECT_LT(core::panel_velocity(s, Vec3(x_stem + 3.0, 0.0, -0.1)).norm(), 0.02 * kU);
+}
+
+}  // namespace
