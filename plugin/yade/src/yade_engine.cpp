@@ -1,5 +1,7 @@
 #include "yade_engine.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +15,7 @@
 #include "brash/guard.hpp"
 #include "brash/paths.hpp"
 #include "brash/run_layout.hpp"
+#include "brash/run/driver.hpp"
 #include "brash/runner_setup.hpp"
 
 namespace fs = std::filesystem;
@@ -27,16 +30,17 @@ fs::path env_or(const char* var, const fs::path& fallback) {
   return v && *v ? fs::path(v) : fallback;
 }
 
-std::string yade_command(const fs::path& run_dir, int threads) {
+std::string yade_command(const fs::path& run_dir, int threads, const std::string& restart) {
   const fs::path home = std::getenv("HOME") && *std::getenv("HOME") ? fs::path(std::getenv("HOME")) : run_dir / "home";
   fs::create_directories(home);
   // exec: the shell's pid becomes YADE's, so that a stop can signal it
   return fmt::format(
       "cd {} && echo $$ > engine.pid && HOME={} PYTHONPATH={}${{PYTHONPATH:+:$PYTHONPATH}} OMP_NUM_THREADS={} exec {} "
-      "-n -j{} -x {} scene.json 2>&1",
+      "-n -j{} -x {} scene.json{} 2>&1",
       run::shell_quote(run_dir), run::shell_quote(home), run::shell_quote(paths::yade_python_dir()), threads,
       run::shell_quote(env_or("BRASH_YADE_EXE", BRASH_YADE_EXE)), threads,
-      run::shell_quote(env_or("BRASH_YADE_SCRIPT", paths::yade_python_dir() / "brash_yade_scene.py")));
+      run::shell_quote(env_or("BRASH_YADE_SCRIPT", paths::yade_python_dir() / "brash_yade_scene.py")),
+      restart.empty() ? std::string() : " " + run::shell_quote(restart));
 }
 
 long read_pid(const fs::path& file) {
@@ -95,9 +99,12 @@ nlohmann::json YadeEngine::guards_json(const fs::path& run_dir) const {
           {"max_dt_fraction", kMaxTimestepOverRayleigh}};
 }
 
-void YadeEngine::write_scene(const fs::path& run_dir, bool /*resume: never, no restarts*/) {
+// On resume, scene.json is written again (the same case; the restart interval of this invocation).
+void YadeEngine::write_scene(const fs::path& run_dir, bool /*resume*/) {
   const Case& c = case_;
   hull::write_stl(run_dir / "hull.stl", contact_mesh_);
+  const long restart_every_steps =
+      std::max(1L, std::lround(run::restart_interval_s(c, restart_every_s_) / c.run.timestep_s));
   const nlohmann::json scene = {
       {"case", c.name},
       {"packing_file", c.ice.packing_file.string()},
@@ -116,14 +123,31 @@ void YadeEngine::write_scene(const fs::path& run_dir, bool /*resume: never, no r
       {"duration_s", c.run.duration_s},
       {"output_interval_s", c.run.output_interval_s},
       {"dump_interval_s", c.run.dump_interval_s},
+      {"restart_every_steps", restart_every_steps},
       {"guards", guards_json(run_dir)}};
   run::write_atomic(run_dir / "scene.json", scene.dump(1) + "\n");
 }
 
-// The scene writes hull_force.csv.part as it goes and renames it hull_force.csv at its end.
+// restart/<10-digit iteration>/ holding scene.yade and state.json (the scene renames a point into place whole),
+// newest first.
+std::vector<std::string> YadeEngine::restarts(const fs::path& run_dir) const {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(run_dir / "restart", ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() != 10 || name.find_first_not_of("0123456789") != std::string::npos) continue;
+    if (fs::is_regular_file(entry.path() / "scene.yade") && fs::is_regular_file(entry.path() / "state.json"))
+      names.push_back(name);
+  }
+  std::sort(names.rbegin(), names.rend());
+  for (auto& n : names) n = "restart/" + n;
+  return names;
+}
+
+// The scene writes hull_force_yade.csv as it goes (a resumed scene first rewrites it with the rows before its
+// restart point); the driver makes hull_force.csv of it.
 std::vector<run::ForceRow> YadeEngine::force_record(const fs::path& run_dir, double t_max_s) const {
-  const fs::path done = run_dir / "hull_force.csv", part = run_dir / "hull_force.csv.part";
-  std::ifstream in(fs::exists(part) ? part : done);
+  std::ifstream in(run_dir / "hull_force_yade.csv");
   std::vector<run::ForceRow> rows;
   std::string line;
   std::getline(in, line);  // header
@@ -137,13 +161,16 @@ std::vector<run::ForceRow> YadeEngine::force_record(const fs::path& run_dir, dou
 
 // Runs YADE, mirrors its output to log.txt, its "[brash-yade] t = T / D s ..." lines to the monitor and its other
 // "[brash-yade]" lines to the terminal; the summary it writes at its end completes meta.json.
-run::Attempt YadeEngine::advance(const fs::path& run_dir, const std::string& /*restart*/, run::Monitor& monitor) {
-  std::ofstream log(run_dir / "log.txt");
-  const std::string cmd = yade_command(run_dir, threads_);
+// A resumed attempt appends to log.txt and passes its restart point to the scene.
+run::Attempt YadeEngine::advance(const fs::path& run_dir, const std::string& restart, run::Monitor& monitor) {
+  std::ofstream log(run_dir / "log.txt", restart.empty() ? std::ios::trunc : std::ios::app);
+  std::error_code ec;
+  fs::remove(run_dir / "yade_summary.json", ec);  // written by the scene at its end: only this attempt's counts
+  const std::string cmd = yade_command(run_dir, threads_, restart);
   FILE* pipe = ::popen(cmd.c_str(), "r");
   if (!pipe) throw std::runtime_error("cannot start " + cmd);
   run::Attempt a;
-  long pid = 0;
+  long pid = 0, first_step = 0;
   bool stop_sent = false;
   char buf[8192];
   while (std::fgets(buf, sizeof buf, pipe)) {
@@ -156,11 +183,13 @@ run::Attempt YadeEngine::advance(const fs::path& run_dir, const std::string& /*r
       a.started = true;
       a.t_last_s = t;
       if (a.t_first_s < 0) a.t_first_s = t;
-      a.particle_steps = double(particles_) * double(step);
+      a.particle_steps = double(particles_) * double(step - first_step);
       if (monitor.progress(t, a.particle_steps) && !stop_sent && pid > 0) {
         stop_sent = true;
         ::kill(static_cast<pid_t>(pid), SIGTERM);
       }
+    } else if (std::sscanf(line.c_str(), "[brash-yade] resumed from %*s iteration %ld", &first_step) == 1) {
+      std::fputs(line.c_str(), stderr);
     } else if (line.rfind("[brash-yade] ERROR", 0) == 0 && a.error.empty()) {
       a.error = line.substr(20, line.find('\n') - 20);  // after "[brash-yade] ERROR: "
     } else if (line.rfind("[brash-yade]", 0) == 0) {
