@@ -41,7 +41,8 @@ constexpr EnumText<Treatment> kTreatment[] = {{Treatment::Implicit, "implicit"},
                                               {Treatment::Explicit, "explicit"}};
 constexpr EnumText<DragLaw> kDragLaw[] = {{DragLaw::Constant, "constant"},
                                           {DragLaw::SchillerNaumann, "schiller_naumann"}};
-constexpr EnumText<HullFlow> kHullFlow[] = {{HullFlow::None, "none"}, {HullFlow::ThinShip, "thin_ship"}};
+constexpr EnumText<HullFlow> kHullFlow[] = {
+    {HullFlow::None, "none"}, {HullFlow::ThinShip, "thin_ship"}, {HullFlow::Panel, "panel"}};
 constexpr EnumText<CaTable> kCaTable[] = {{CaTable::Table1, "table1"},
                                           {CaTable::Text, "text"},
                                           {CaTable::Zero, "zero"},

@@ -181,15 +181,18 @@ void write_flow_table(const std::filesystem::path& file, const core::FlowTable& 
   std::filesystem::rename(tmp, file);
 }
 
-std::optional<core::FlowTable> read_flow_table(const std::filesystem::path& file, const std::string& key) {
+namespace {
+
+// key: the key the file must have; nullptr: any
+std::optional<core::FlowTable> read_table(const std::filesystem::path& file, const std::string* key) {
   std::ifstream in(file, std::ios::binary);
   char magic[sizeof kMagic - 1];
   std::uint64_t key_size = 0, count = 0;
   if (!in.read(magic, sizeof magic) || std::string(magic, sizeof magic) != kMagic) return std::nullopt;
-  if (!in.read(reinterpret_cast<char*>(&key_size), sizeof key_size) || key_size != key.size())
-    return std::nullopt;
+  if (!in.read(reinterpret_cast<char*>(&key_size), sizeof key_size) || key_size > (1u << 16)) return std::nullopt;
   std::string stored(key_size, '\0');
-  if (!in.read(stored.data(), static_cast<std::streamsize>(key_size)) || stored != key) return std::nullopt;
+  if (!in.read(stored.data(), static_cast<std::streamsize>(key_size)) || (key && stored != *key))
+    return std::nullopt;
   double box[6];
   std::int32_t nodes[3];
   char mirror = 0;
@@ -207,5 +210,13 @@ std::optional<core::FlowTable> read_flow_table(const std::filesystem::path& file
     return std::nullopt;  // a damaged file: computed again
   }
 }
+
+}  // namespace
+
+std::optional<core::FlowTable> read_flow_table(const std::filesystem::path& file, const std::string& key) {
+  return read_table(file, &key);
+}
+
+std::optional<core::FlowTable> read_flow_table(const std::filesystem::path& file) { return read_table(file, nullptr); }
 
 }  // namespace brash::hull

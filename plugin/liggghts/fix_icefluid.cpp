@@ -16,6 +16,7 @@
 #include "brash/error.hpp"
 #include "brash/hull/flow.hpp"
 #include "brash/hull/mesh.hpp"
+#include "brash/hull/panel_flow.hpp"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -132,9 +133,16 @@ void FixIceFluid::parse(int narg, char** arg) {
       // Every rank builds the same table from the same file (deterministic): no communication,
       // rank-independent. The mesh reader's and the table's errors name the file or the problem, not the fix.
       try {
-        const brash::hull::Mesh mesh = brash::hull::read_mesh(hull_flow_file);
-        hull_flow_ = brash::hull::thin_ship_flow(mesh, params_.water_level_m - hull_flow_origin_m_.z(),
-                                                 hull_flow_speed_m_s_);
+        // a .bin file: a table the runner computed (brash::hull_flow_table, thin-ship or panel flow)
+        if (hull_flow_file.size() > 4 && hull_flow_file.compare(hull_flow_file.size() - 4, 4, ".bin") == 0) {
+          auto table = brash::hull::read_flow_table(hull_flow_file);
+          if (!table) throw brash::InputError(hull_flow_file + ": not a readable brash flow table");
+          hull_flow_ = std::move(*table);
+        } else {
+          const brash::hull::Mesh mesh = brash::hull::read_mesh(hull_flow_file);
+          hull_flow_ = brash::hull::thin_ship_flow(mesh, params_.water_level_m - hull_flow_origin_m_.z(),
+                                                   hull_flow_speed_m_s_);
+        }
       } catch (const brash::InputError& e) {
         const std::string msg = std::string("fix icefluid: ") + e.what();
         error->all(FLERR, msg.c_str());

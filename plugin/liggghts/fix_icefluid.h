@@ -13,9 +13,10 @@
      water_density rho_w (kg/m^3)                          [1000]
      flow         vx vy vz, flow velocity (m/s)            [0 0 0]
      hull_flow    FILE x0 y0 z0 speed: instead of `flow`, the water's flow around a hull (thin-ship double
-                  body, plugin/core hull_flow.hpp): the hull mesh FILE, its frame's origin in the scene at
-                  t = 0 and its speed along x (the hull moves with t = step * dt, as fix move/mesh linear from
-                  step 0); only the drag uses it   [none]
+                  body, plugin/core hull_flow.hpp): the hull mesh FILE, or a flow table FILE.bin that the
+                  runner computed (thin-ship or panel flow, brash/hull/panel_flow.hpp); its frame's origin
+                  in the scene at t = 0 and its speed along x (the hull moves with t = step * dt, as fix
+                  move/mesh linear from step 0); only the drag uses it   [none]
      g            gravity magnitude for buoyancy (m/s^2)   [9.81]
      gravity      no | yes: also apply -m g here (then do not use fix gravity)  [no]
      output_every N: fill the per-atom output only every N steps (dump interval)  [1]

@@ -115,7 +115,8 @@ struct FluidSpec {
   DragLaw drag_law = DragLaw::Constant;
   CaTableSpec ca_table;
   // U_flow of the drag: none = still water (the default); thin_ship = the water pushed ahead and aside by the
-  // bow and following the stern (plugin/core hull_flow.hpp; LIGGGHTS only)
+  // bow and following the stern (plugin/core hull_flow.hpp); panel = the double-body potential flow
+  // (panel_flow.hpp); LIGGGHTS and ODE (brash/case_hull_flow.hpp)
   HullFlow hull_flow = HullFlow::None;
   bool operator==(const FluidSpec&) const = default;
 };

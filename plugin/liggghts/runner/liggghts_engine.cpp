@@ -12,7 +12,9 @@
 #include <sstream>
 #include <sys/wait.h>
 
+#include "brash/case_hull_flow.hpp"
 #include "brash/error.hpp"
+#include "brash/hull/panel_flow.hpp"
 #include "brash/run_layout.hpp"
 #include "brash/runner_setup.hpp"
 
@@ -180,8 +182,13 @@ void LiggghtsEngine::write_scene(const fs::path& run_dir, bool resume) {
   if (!full_closed_)
     std::cerr << "[brash-liggghts] note: " << case_.hull.file.string()
               << " is not a closed surface: the hull penetration guard is off\n";
-  // the thin-ship sheet needs the whole hull under water, not the band or the half
-  if (case_.fluid.hull_flow != HullFlow::None) options_.flow_hull_file = full_file;
+  // the flow around the whole hull (not the band or the half), computed once here (brash::hull_flow_table)
+  if (case_.fluid.hull_flow != HullFlow::None) {
+    options_.flow_hull_file = "hull_flow.bin";
+    if (!resume || !fs::exists(run_dir / options_.flow_hull_file))
+      hull::write_flow_table(run_dir / options_.flow_hull_file, hull_flow_table(case_, full_mesh_),
+                             std::string(to_string(case_.fluid.hull_flow)));
+  }
   if (resume) return;
   hull::write_stl(run_dir / "hull.stl", contact_mesh_);
   run::write_atomic(run_dir / "packing.data",

@@ -174,7 +174,7 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
   s += fmt::format(
       "fix fl {} icefluid {} output_every {}{}\n", moving, icefluid_arguments(brash::fluid_params(c)), dump_every,
       // the flow around the hull: the full hull, its frame's origin at t = 0 and speed, as fix hull above
-      c.fluid.hull_flow == HullFlow::ThinShip
+      c.fluid.hull_flow != HullFlow::None
           ? fmt::format(" hull_flow {} {:.9g} 0 {:.9g} {:.9g}", opt.flow_hull_file, hull_x0, -c.hull.draft_m,
                         c.ship.speed_m_s)
           : std::string());

@@ -20,8 +20,8 @@ struct SceneOptions {
   // The full closed hull for fix brash/guard's hull check (the contact hull may be a band or a half);
   // empty = no hull check.
   std::string guard_hull_file = "hull.stl";
-  // The full hull for fluid.hull_flow's thin-ship flow (fix icefluid hull_flow), in the same frame as
-  // hull_file.
+  // fix icefluid hull_flow's file: the full hull (thin-ship flow built by the fix), in the same frame as
+  // hull_file, or the flow table the runner computed (hull_flow.bin, brash::hull_flow_table).
   std::string flow_hull_file = "hull.stl";
   double hull_x_min_m = 0;      // x extent of the hull in the STL frame (stern, bow) for speedups.farfield
   double hull_x_max_m = 0;

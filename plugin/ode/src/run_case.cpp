@@ -14,6 +14,7 @@
 
 #include "brash/case.hpp"
 #include "brash/case_fluid.hpp"
+#include "brash/case_hull_flow.hpp"
 #include "brash/error.hpp"
 #include "brash/guard.hpp"
 #include "brash/hull/flow.hpp"
@@ -97,8 +98,7 @@ void OdeEngine::load(const Case& c, const fs::path& /*case_file*/, const std::ve
   if (s.limits.max_hull_penetration_d && s.hull_closed) s.hull_query = std::make_unique<hull::Proximity>(s.contact_mesh);
   // The water's flow around the hull (fluid.hull_flow) from the full hull, as the LIGGGHTS runner builds it: the
   // STL's frame is the hull body's lowered by the draft, so the water level is at z = level + draft there.
-  if (c.fluid.hull_flow == HullFlow::ThinShip)
-    s.hull_flow = hull::thin_ship_flow(s.contact_mesh, c.water.level_m + c.hull.draft_m, c.ship.speed_m_s);
+  s.hull_flow = hull_flow_table(c, s.contact_mesh);
   if (c.hull.band_m)
     s.contact_mesh = hull::clip_band(s.contact_mesh, c.hull.draft_m - (*c.hull.band_m)[0], c.hull.draft_m + (*c.hull.band_m)[1]);
 }

@@ -47,5 +47,7 @@ core::FlowTable panel_flow(const Mesh& mesh, double water_z_m, double ship_speed
 void write_flow_table(const std::filesystem::path& file, const core::FlowTable& table,
                       const std::string& key);
 std::optional<core::FlowTable> read_flow_table(const std::filesystem::path& file, const std::string& key);
+// ... whatever its key (a table handed to an engine: fix icefluid's hull_flow FILE.bin)
+std::optional<core::FlowTable> read_flow_table(const std::filesystem::path& file);
 
 }  // namespace brash::hull

@@ -9,7 +9,7 @@ namespace brash {
 enum class FluidModel { Drag, AddedMass, Both };   // Eq. 1, Eq. 2, Eq. 1 + Eq. 2
 enum class Treatment { Explicit, Implicit };       // lagged acceleration vs mass augmentation
 enum class DragLaw { Constant, SchillerNaumann };  // C_D constant or C_D(Re)
-enum class HullFlow { None, ThinShip };            // still water, or the flow around the hull (drag's U_flow)
+enum class HullFlow { None, ThinShip, Panel };     // still water, or the flow around the hull (drag's U_flow)
 
 constexpr std::string_view to_string(FluidModel m) {
   switch (m) {
@@ -25,7 +25,7 @@ constexpr std::string_view to_string(DragLaw d) {
 }
 
 constexpr std::string_view to_string(HullFlow h) {
-  return h == HullFlow::None ? "none" : "thin_ship";
+  return h == HullFlow::None ? "none" : h == HullFlow::ThinShip ? "thin_ship" : "panel";
 }
 
 }  // namespace brash

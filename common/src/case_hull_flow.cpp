@@ -1,0 +1,69 @@
+// fluid.hull_flow of a case: thin-ship or panel flow, the panel flow cached (case_hull_flow.hpp).
+#include "brash/case_hull_flow.hpp"
+
+#include <fmt/format.h>
+
+#include <brash/hull/flow.hpp>
+#include <brash/hull/panel_flow.hpp>
+#include <cstdint>
+#include <cstring>
+#include <iostream>
+
+namespace brash {
+namespace {
+
+// FNV-1a over the mesh's bytes: any change of the hull changes the key
+std::uint64_t mesh_hash(const hull::Mesh& mesh) {
+  std::uint64_t h = 1469598103934665603ull;
+  auto add = [&](const void* p, std::size_t n) {
+    const auto* b = static_cast<const unsigned char*>(p);
+    for (std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
+  };
+  for (const auto& v : mesh.vertices) add(v.data(), 3 * sizeof(double));
+  for (const auto& f : mesh.faces) add(f.data(), 3 * sizeof(int));
+  return h;
+}
+
+double water_z(const Case& c) {
+  return c.water.level_m + c.hull.draft_m;
+}
+
+}  // namespace
+
+std::filesystem::path panel_flow_cache_file(const Case& c) {
+  return c.ice.packing_file.parent_path() / "panel_flow.bin";
+}
+
+std::string panel_flow_key(const Case& c, const hull::Mesh& mesh) {
+  const hull::PanelFlowSettings st;
+  return fmt::format(
+      "panel mesh {:016x} {} vertices {} faces; water_z {:.12g} m; speed {:.12g} m/s; max_panels {}; "
+      "far_factor {:.6g}; spacing {:.6g} draft; margin {:.6g} breadth",
+      mesh_hash(mesh), mesh.vertices.size(), mesh.faces.size(), water_z(c), c.ship.speed_m_s, st.max_panels,
+      st.far_factor, st.table_spacing_fraction_of_draft, st.margin_fraction_of_breadth);
+}
+
+core::FlowTable hull_flow_table(const Case& c, const hull::Mesh& mesh) {
+  switch (c.fluid.hull_flow) {
+    case HullFlow::None:
+      return {};
+    case HullFlow::ThinShip:
+      return hull::thin_ship_flow(mesh, water_z(c), c.ship.speed_m_s);
+    case HullFlow::Panel:
+      break;
+  }
+  const std::filesystem::path cache = panel_flow_cache_file(c);
+  const std::string key = panel_flow_key(c, mesh);
+  if (auto cached = hull::read_flow_table(cache, key)) return *cached;
+  core::FlowTable t = hull::panel_flow(mesh, water_z(c), c.ship.speed_m_s);
+  try {
+    std::filesystem::create_directories(cache.parent_path());
+    hull::write_flow_table(cache, t, key);
+  } catch (const std::exception& e) {  // a read-only case folder: the run goes on, computing it each time
+    std::cerr << fmt::format("brash: note: cannot cache the panel flow in {}: {}\n", cache.string(),
+                             e.what());
+  }
+  return t;
+}
+
+}  // namespace brash
