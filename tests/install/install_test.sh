@@ -27,6 +27,8 @@ for f in bin/brash-liggghts bin/brash-liggghts-run bin/brash-post bin/brash-case
          share/brash/cases/jbc_narrow/case.yaml share/brash/cases/jbc_ia_5kn/case.yaml \
          share/brash/hull_meshes/jbc_panamax_model.stl share/brash/hull_meshes/data/jbc_offsets_1to40.csv \
          share/brash/study/smoke.yaml share/brash/study_report/templates/study.md.tmpl \
+         share/brash/examples/channel/in.channel share/brash/examples/channel/hull_barge.stl \
+         share/brash/examples/floating_sphere/in.floating_sphere share/brash/examples/yade/floating_spheres.py \
          share/doc/brash/fix_icefluid.txt include/brash/paths.hpp include/brash/core/fluid.hpp \
          lib/libbrash_core.a lib/cmake/brash/brashConfig.cmake lib/cmake/brash/brashTargets.cmake; do
   [ -f "$prefix/$f" ] || bad "not installed: $f"
