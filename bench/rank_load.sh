@@ -36,7 +36,7 @@ for np in "${ranks[@]}"; do
   start=$(date +%s.%N)
   (cd "$d" && mpirun --allow-run-as-root --oversubscribe -np "$np" "$bin/brash-liggghts" -in in.lmp -log none) \
     > "$d/screen.txt" 2>&1 || { echo "| $np | failed: see $d/screen.txt |"; tail -5 "$d/screen.txt"; continue; }
-  wall=$(echo "$(date +%s.%N) - $start" | bc)
+  wall=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { print b - a }')
   read -r la lm < <(stat Nlocal "$d/screen.txt")
   read -r ga gm < <(stat Nghost "$d/screen.txt")
   read -r na nm < <(stat Neighs "$d/screen.txt")
