@@ -1,4 +1,4 @@
-// FSICR channel resistance R_CH; formula and tags in ../shared/notes/fsicr.md.
+// FSICR channel resistance R_CH: the rule's formula, its constants and the validity tags (fsicr.hpp).
 #include <brash/post/fsicr.hpp>
 
 #include <algorithm>

@@ -146,7 +146,24 @@ Case load_run_case(const DriverOptions& o, const std::string& tag) {
   return load_case_with_overrides(case_file_of(o), resume ? CaseOverrides{} : o.overrides, tag);
 }
 
+namespace {
+
+// A run is a case or a resume; a resume continues the run as it was set up. Empty: fine, else the complaint.
+std::string options_problem(const DriverOptions& o) {
+  if (o.case_path.empty() && o.resume_dir.empty()) return "case_dir (a folder with case.yaml) or --resume RUN_DIR is required";
+  const auto& v = o.overrides;
+  if (!o.resume_dir.empty() && (!v.model.empty() || !v.treatment.empty() || v.duration_s > 0 || !o.out_dir.empty()))
+    return "--resume continues a run as it was set up; it takes no --model/--treatment/--duration/--out";
+  return {};
+}
+
+}  // namespace
+
 int drive(Engine& engine, const DriverOptions& o) {
+  if (const std::string problem = options_problem(o); !problem.empty()) {
+    std::cerr << engine.runner() << ": error: " << problem << "\n";
+    return 2;
+  }
   const std::string tag = "[brash-" + engine.name() + "]";
   const bool resume = !o.resume_dir.empty();
   fs::path run_dir;

@@ -10,6 +10,7 @@
 #include "brash/case.hpp"
 #include "brash/error.hpp"
 #include "brash/run/driver.hpp"
+#include "brash/run/driver_cli.hpp"
 #include "brash/run_layout.hpp"
 #include "liggghts_engine.h"
 #include "mpi_launcher.h"
@@ -57,12 +58,8 @@ int main(int argc, char** argv) {
   CLI::App app{"brash-liggghts-run: run a case directory with LIGGGHTS and write the brash run layout"};
   brash::run::DriverOptions o;
   int ranks = 1;
-  bool no_post = false;
   fs::path rebuild_dir;
-  auto* case_opt = app.add_option("case_dir", o.case_path, "case folder holding case.yaml");
-  auto* resume_opt = app.add_option("--resume", o.resume_dir,
-                                    "continue an interrupted run directory from its newest restart file");
-  case_opt->excludes(resume_opt);
+  const auto cli = brash::run::add_driver_options(app, o, "liggghts", "in.lmp, packing.data, hull.stl");
   app.add_option("--np", ranks, "MPI ranks")->check(CLI::Range(1, 1024));
   std::string launcher;
   bool oversubscribe = false;
@@ -72,22 +69,11 @@ int main(int argc, char** argv) {
   app.add_flag("--oversubscribe", oversubscribe,
                "let Open MPI's mpirun start more ranks than it counts cores (added by itself when --np exceeds the "
                "CPUs this process may use)");
-  app.add_option("--out", o.out_dir, "run directory (default: runs/<case>-liggghts-<model>-<stamp>)");
-  app.add_option("--runs-root", o.runs_root, "where run directories are created");
-  app.add_option("--duration", o.overrides.duration_s, "simulated time [s] (default: the case's run.duration_s)");
-  app.add_option("--model", o.overrides.model, "override fluid.model: drag | added_mass | both");
-  app.add_option("--treatment", o.overrides.treatment, "override fluid.treatment: implicit | explicit");
-  app.add_option("--restart-every", o.restart_every_s,
-                 "model time [s] between restart files (default: a tenth of the run; also on --resume)")
-      ->check(CLI::PositiveNumber);
-  app.add_flag("--no-post", no_post, "do not run brash-post afterwards");
-  app.add_flag("--prepare-only", o.prepare_only, "write the run directory's inputs (in.lmp, packing.data, hull.stl) and stop");
   auto* rebuild_opt = app.add_option("--rebuild-record", rebuild_dir,
                                      "rewrite a run directory's hull_force.csv from its raw force files (all "
                                      "attempts) with this runner's rules, then run brash-post");
-  rebuild_opt->excludes(case_opt)->excludes(resume_opt);
+  rebuild_opt->excludes(cli.case_dir)->excludes(cli.resume);
   CLI11_PARSE(app, argc, argv);
-  o.post = !no_post;
   if (!rebuild_dir.empty()) {
     try {
       rebuild_record(rebuild_dir);
@@ -95,17 +81,7 @@ int main(int argc, char** argv) {
       std::cerr << "brash-liggghts-run: error: " << e.what() << "\n";
       return 1;
     }
-    return no_post ? 0 : brash::run::run_postprocessor(rebuild_dir, "[brash-liggghts]");
-  }
-  if (o.case_path.empty() && o.resume_dir.empty()) {
-    std::cerr << "brash-liggghts-run: error: case_dir (a folder with case.yaml) or --resume RUN_DIR is required\n";
-    return 2;
-  }
-  if (!o.resume_dir.empty() && (!o.overrides.model.empty() || !o.overrides.treatment.empty() ||
-                                o.overrides.duration_s > 0 || !o.out_dir.empty())) {
-    std::cerr << "brash-liggghts-run: error: --resume continues a run as it was set up; it takes no "
-                 "--model/--treatment/--duration/--out\n";
-    return 2;
+    return o.post ? brash::run::run_postprocessor(rebuild_dir, "[brash-liggghts]") : 0;
   }
   std::string prefix;
   try {

@@ -1,6 +1,6 @@
 // FSICR channel resistance R_CH (Finnish-Swedish Ice Class Rules, "engine output" chapter).
-// Formula, constants and confidence tags: ../shared/notes/fsicr.md. Every constant lives in
-// FsicrConstants so a corrected rule text changes one place.
+// The formula is written out in fsicr.cpp (docs/fsicr_vs_paper.md checks it on the JBC). Every constant lives
+// in FsicrConstants so a corrected rule text changes one place.
 #pragma once
 #include <functional>
 #include <optional>
