@@ -88,7 +88,9 @@ class Restart : public ::testing::Test {
   static void TearDownTestSuite() { fs::remove_all(kRoot); }
 
   // Same hull force rows and final particle state as the uninterrupted run A.
-  static void expect_same_as_a(const fs::path& dir, const std::string& what) {
+  // bit_for_bit: resumed from a regular restart file (the orientations were reset there in run A too,
+  // World::reset_orientations), the final snapshot is byte-identical to A's.
+  static void expect_same_as_a(const fs::path& dir, const std::string& what, bool bit_for_bit = true) {
     const double df = max_diff(kRoot / "A" / "hull_force.csv", dir / "hull_force.csv", 1, 4);
     const double dx = max_diff(kRoot / "A" / "particles" / "particles_400.csv", dir / "particles" / "particles_400.csv", 1, 4);
     const double dv = max_diff(kRoot / "A" / "particles" / "particles_400.csv", dir / "particles" / "particles_400.csv", 5, 8);
@@ -101,6 +103,9 @@ class Restart : public ::testing::Test {
     EXPECT_LE(dx, 1e-9);   // m
     EXPECT_LE(dv, 1e-6);   // m/s
     EXPECT_NE(slurp(dir / "meta.json").find("\"status\": \"complete\""), std::string::npos);
+    if (bit_for_bit) {
+      EXPECT_EQ(slurp(kRoot / "A" / "particles" / "particles_400.csv"), slurp(dir / "particles" / "particles_400.csv"));
+    }
   }
 };
 
@@ -138,7 +143,8 @@ TEST_F(Restart, SigtermStopsAtTheStepAndResumesFromIt) {
   const std::string resumed = slurp(s / "meta.json");
   EXPECT_NE(resumed.find("restart_0000000230.bin"), std::string::npos) << resumed;
   EXPECT_NE(resumed.find("\"hull_force_rows_dropped\": 0"), std::string::npos) << resumed;
-  expect_same_as_a(s, "SIGTERM during step 230, resume from 230");
+  // the restart written at the signal is not one run A wrote: its orientations are ODE's, restored within ulps
+  expect_same_as_a(s, "SIGTERM during step 230, resume from 230", false);
 }
 
 TEST_F(Restart, RealKill9ThenResume) {

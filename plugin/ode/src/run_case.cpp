@@ -9,12 +9,14 @@
 #include <csignal>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <unordered_map>
 
 #include "brash/case.hpp"
 #include "brash/case_fluid.hpp"
 #include "brash/case_hull_flow.hpp"
+#include "brash/core/spatial_order.hpp"
 #include "brash/error.hpp"
 #include "brash/guard.hpp"
 #include "brash/hull/flow.hpp"
@@ -150,6 +152,7 @@ class Stepping {
   std::vector<run::ForceRow>& rows_;
   run::Monitor& monitor_;
   std::unique_ptr<World> w_;
+  std::vector<std::size_t> order_;  // world slot -> piece index in the packing (the spheres in a spatial order)
   std::string log_, index_ = "step,t_s,file,hull_x_m\n";
   // loop state that a restart file carries besides the world
   long k0_ = 0, win_n_ = 0, ps_settle_ = 0;
@@ -168,7 +171,14 @@ void Stepping::log(const std::string& line) {
 void Stepping::build_world() {
   w_ = std::make_unique<World>(fluid_params(c_), o_.stepper, Frictions{c_.friction.ice_ice, c_.friction.ice_hull, c_.friction.ice_wall},
                                cull_skips(o_, c_), o_.implicit_mode);
-  for (const auto& p : s_.spheres) w_->add_sphere(Vec3(p.x_m, p.y_m, p.z_m), 0.5 * p.diameter_m, c_.ice.density_kg_m3);
+  // in a spatial order (cells of two mean diameters): ODE's bodies, and its contact rows, then sit in memory as
+  // in space; ids in every output are the packing's (order_)
+  std::vector<Vec3> centres;
+  centres.reserve(s_.spheres.size());
+  for (const auto& p : s_.spheres) centres.emplace_back(p.x_m, p.y_m, p.z_m);
+  order_ = core::spatial_order(centres, 2 * c_.ice.diameter_mean_m);
+  for (const std::size_t j : order_)
+    w_->add_sphere(centres[j], 0.5 * s_.spheres[j].diameter_m, c_.ice.density_kg_m3);
   std::vector<double> verts;
   std::vector<dTriIndex> tris;
   double hx0 = 1e300, hx1 = -1e300, hz0 = 1e300;
@@ -276,6 +286,7 @@ void Stepping::save_restart(long step) {
   rw.put<double>(win_sum_);
   rw.put<long>(win_n_);
   rw.put<double>(std::chrono::duration<double>(std::chrono::steady_clock::now() - loop0_).count());
+  w_->reset_orientations();
   w_->save_state(rw);
   restart::write(run_dir_ / "restart", step, rw.bytes(), 2);
 }
@@ -286,11 +297,11 @@ void Stepping::dump(long step) {
   for (std::size_t i = 0; i < w.size(); ++i) {
     const Vec3 x = w.position(i), v = w.velocity(i);
     if (!x.allFinite() || !v.allFinite())
-      throw std::runtime_error(fmt::format("sphere {} has a non-finite position/velocity at t = {} s (step {})", i + 1,
-                                           double(step) * dt_, step));
+      throw std::runtime_error(fmt::format("sphere {} has a non-finite position/velocity at t = {} s (step {})",
+                                           order_[i] + 1, double(step) * dt_, step));
     const auto im = core::immersion(w.radius(i), x.z(), c_.water.level_m);
     const Vec3& ca = w.fluid_output(i).ca;
-    s += fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g},{:.6g},{:.6g},{:.6g},{:.6g},{:.4g},{:.4g},{:.4g}\n", i + 1, x.x(), x.y(),
+    s += fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g},{:.6g},{:.6g},{:.6g},{:.6g},{:.4g},{:.4g},{:.4g}\n", order_[i] + 1, x.x(), x.y(),
                      x.z(), w.radius(i), v.x(), v.y(), v.z(), im.fraction, ca.x(), ca.y(), ca.z());
   }
   const std::string name = fmt::format("particles_{}.csv", step);
@@ -315,6 +326,7 @@ void Stepping::check_guards(long step) {
   const guard::HullNow hull_now{s_.hull_query.get(), w.hull_position() - Vec3(0, 0, c_.hull.draft_m)};
   const double exit_lo_m = (*s_.limits.box)[0], exit_hi_m = (*s_.limits.box)[1];
   std::size_t exits_now = 0;
+  std::optional<std::pair<std::size_t, std::string>> stop;  // the lowest piece id with a guard stop, its cause
   for (std::size_t i = 0; i < w.size(); ++i) {
     if (w.retired(i)) continue;
     guard::Piece p;
@@ -329,8 +341,9 @@ void Stepping::check_guards(long step) {
     p.radius_m = w.radius(i);
     p.mass_kg = w.mass(i);
     if (const auto cause = guard::check_piece(p, s_.limits, s_.hull_query ? &hull_now : nullptr))
-      throw GuardStop(guard::stop_message(step, double(step) * dt_, static_cast<long>(i) + 1, *cause));
+      if (!stop || order_[i] < stop->first) stop.emplace(order_[i], *cause);
   }
+  if (stop) throw GuardStop(guard::stop_message(step, double(step) * dt_, static_cast<long>(stop->first) + 1, stop->second));
   if (exits_now)
     log(fmt::format("step {} (t = {:.4f} s): {} piece(s) left the scene through the channel's ends (x < {:.6g} or x > "
                     "{:.6g} m); {} in all",

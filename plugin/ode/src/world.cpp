@@ -611,6 +611,11 @@ void World::save_state(restart::Writer& w) const {
   }
 }
 
+void World::reset_orientations() {
+  const dQuaternion identity{1, 0, 0, 0};
+  for (auto& s : spheres_) dBodySetQuaternion(s.body, identity);
+}
+
 void World::load_state(restart::Reader& r) {
   broad_spheres_stale_ = true;
   cull_geoms_stale_ = skips_.cull;  // geoms are not in the file: take the culled ones out again

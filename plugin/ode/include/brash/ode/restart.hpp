@@ -18,7 +18,7 @@
 
 namespace brash::ode::restart {
 
-constexpr std::uint32_t kVersion = 2;  // 2: per-sphere "retired" flag (World::retire)
+constexpr std::uint32_t kVersion = 3;  // 2: per-sphere "retired" flag (World::retire); 3: spheres in a spatial order
 
 class Writer {
  public:

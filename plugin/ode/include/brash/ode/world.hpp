@@ -142,6 +142,11 @@ class World {
   // Not restored: ODE's auto-disable averaging buffers (with --auto-disable a resume is not bit-exact).
   void save_state(restart::Writer& w) const;
   void load_state(restart::Reader& r);
+  // Every sphere's orientation to the identity. A sphere's orientation is not observable (its geometry and
+  // inertia are isotropic), but ODE's step carries it and load_state cannot give an arbitrary one back bit for
+  // bit: set before every restart file, in the uninterrupted run and the resumed one alike, a resume continues
+  // bit for bit.
+  void reset_orientations();
   // Spheres whose saved quaternion could not be given back bit for bit by the last load_state (see world.cpp).
   std::size_t restore_inexact() const { return restore_inexact_; }
 
