@@ -1,11 +1,11 @@
 // brash::core::spatial_order: a permutation that puts neighbours in space next to each other in memory.
-#include "brash/core/spatial_order.hpp"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <random>
 #include <stdexcept>
+
+#include "brash/core/spatial_order.hpp"
 
 namespace {
 
@@ -37,8 +37,8 @@ TEST(SpatialOrder, IsAPermutationSortedByCellXThenYThenZ) {
 }
 
 TEST(SpatialOrder, PutsNeighboursInSpaceCloseInMemory) {
-  // every pair of lattice neighbours (distance 1) is at most one x-slab (8 x 2 = 16 slots) apart in the order;
-  // in the shuffled packing order they are hundreds apart on average
+  // every pair of lattice neighbours (distance 1) is at most one x-slab (8 x 2 = 16 slots) apart in the
+  // order; in the shuffled packing order they are hundreds apart on average
   const auto p = shuffled_lattice(2);
   const auto order = spatial_order(p, 1.0);
   std::vector<std::size_t> slot(p.size());

@@ -1,12 +1,12 @@
 #include "brash/core/spatial_order.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 namespace brash::core {
 
@@ -24,7 +24,8 @@ std::vector<std::size_t> spatial_order(const std::vector<Eigen::Vector3d>& posit
     for (int k = 0; k < 3; ++k) cell[i][k] = std::llround(std::floor((positions_m[i][k] - lo[k]) / cell_m));
   std::vector<std::size_t> order(positions_m.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cell[a] < cell[b]; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return cell[a] < cell[b]; });
   return order;
 }
 
