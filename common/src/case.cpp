@@ -43,6 +43,7 @@ constexpr EnumText<DragLaw> kDragLaw[] = {{DragLaw::Constant, "constant"},
                                           {DragLaw::SchillerNaumann, "schiller_naumann"}};
 constexpr EnumText<HullFlow> kHullFlow[] = {
     {HullFlow::None, "none"}, {HullFlow::ThinShip, "thin_ship"}, {HullFlow::Panel, "panel"}};
+constexpr EnumText<ChannelEnds> kChannelEnds[] = {{ChannelEnds::Open, "open"}, {ChannelEnds::Walls, "walls"}};
 constexpr EnumText<CaTable> kCaTable[] = {{CaTable::Table1, "table1"},
                                           {CaTable::Text, "text"},
                                           {CaTable::Zero, "zero"},
@@ -59,6 +60,7 @@ std::string_view text_of(const EnumText<E> (&table)[N], E v) {
 std::string_view to_string(IceClass v) { return text_of(kIceClass, v); }
 std::string_view to_string(PackingMode v) { return text_of(kPackingMode, v); }
 std::string_view to_string(CaTable v) { return text_of(kCaTable, v); }
+std::string_view to_string(ChannelEnds v) { return text_of(kChannelEnds, v); }
 std::string to_string(const CaTableSpec& v) {
   if (v.table == CaTable::Uniform) return fmt::format("uniform {}", v.uniform_ca);
   return std::string(to_string(v.table));
@@ -291,9 +293,10 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
     r.enumeration(s, "ship", "ice_class", kIceClass, c.ship.ice_class);
   }
   {  // channel
-    const auto s = r.section(root, "channel", {"length_m", "width_m"});
+    const auto s = r.section(root, "channel", {"length_m", "width_m", "ends"});
     r.num(s, "channel", "length_m", c.channel.length_m, positive, "> 0");
     r.num(s, "channel", "width_m", c.channel.width_m, positive, "> 0");
+    r.enumeration(s, "channel", "ends", kChannelEnds, c.channel.ends);
   }
   {  // ice
     const auto s = r.section(root, "ice", {"thickness_m", "diameter_mean_m", "diameter_sd_m",
@@ -566,6 +569,7 @@ std::string dump_case_yaml(const Case& c) {
   o += "channel:\n";
   line("  ", "length_m", num(c.channel.length_m));
   line("  ", "width_m", num(c.channel.width_m));
+  if (c.channel.ends != ChannelEnds::Open) line("  ", "ends", std::string(to_string(c.channel.ends)));
   o += "ice:\n";
   line("  ", "thickness_m", num(c.ice.thickness_m));
   line("  ", "diameter_mean_m", num(c.ice.diameter_mean_m));

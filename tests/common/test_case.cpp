@@ -297,18 +297,33 @@ TEST(CaseLoader, HullFlowCaseRunsWithTheModelGivenOnTheCommandLine) {
   // --model added_mass on a drag case with the flow is refused by the final parse
   const fs::path dir = temp_dir("hull_flow_override");
   const fs::path am = write_case(dir, "name: h\nfluid:\n  model: added_mass\n  hull_flow: thin_ship\n");
-  const Case c = brash::run::load_case_with_overrides(am, {"drag", "", -1}, "[test]");
+  const Case c = brash::run::load_case_with_overrides(am, {"drag", "", -1, ""}, "[test]");
   EXPECT_EQ(c.fluid.model, brash::FluidModel::Drag);
   EXPECT_EQ(c.fluid.hull_flow, brash::HullFlow::ThinShip);
-  EXPECT_THROW(brash::run::load_case_with_overrides(am, {"", "", -1}, "[test]"), brash::InputError);
+  EXPECT_THROW(brash::run::load_case_with_overrides(am, {"", "", -1, ""}, "[test]"), brash::InputError);
   const fs::path drag = write_case(dir, "name: h\nfluid: {model: drag, hull_flow: thin_ship}\n", "d.yaml");
   try {
-    (void)brash::run::load_case_with_overrides(drag, {"added_mass", "", -1}, "[test]");
+    (void)brash::run::load_case_with_overrides(drag, {"added_mass", "", -1, ""}, "[test]");
     ADD_FAILURE() << "no InputError";
   } catch (const brash::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("fluid.hull_flow"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("command-line overrides"), std::string::npos) << e.what();
   }
+}
+
+TEST(CaseLoader, ChannelEndsAreOpenUnlessWalledByTheCaseOrTheCommandLine) {
+  EXPECT_EQ(brash::parse_case("name: x\n", kRepo, "mem").channel.ends, brash::ChannelEnds::Open);
+  const Case walls = brash::parse_case("name: x\nchannel: {ends: walls}\n", kRepo, "mem");
+  EXPECT_EQ(walls.channel.ends, brash::ChannelEnds::Walls);
+  // written back only when walled, so an open case's file (and every cache keyed by it) is unchanged
+  EXPECT_NE(brash::dump_case_yaml(walls).find("  ends: walls\n"), std::string::npos);
+  EXPECT_EQ(brash::dump_case_yaml(brash::parse_case("name: x\n", kRepo, "mem")).find("ends:"), std::string::npos);
+  EXPECT_EQ(brash::parse_case(brash::dump_case_yaml(walls), kRepo, "[dump]").channel.ends, brash::ChannelEnds::Walls);
+  const fs::path dir = temp_dir("channel_ends");
+  const fs::path open_case = write_case(dir, "name: e\n");
+  EXPECT_EQ(brash::run::load_case_with_overrides(open_case, {"", "", -1, "walls"}, "[test]").channel.ends,
+            brash::ChannelEnds::Walls);
+  expect_error("name: x\nchannel: {ends: closed}\n", {"channel.ends", "closed", "open | walls"});
 }
 
 TEST(CaseLoaderErrors, NaNAndInfinity) {

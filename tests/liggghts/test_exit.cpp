@@ -100,6 +100,20 @@ TEST(LiggghtsExit, PieceLeavingThroughTheEndIsRemovedAndTheRunGoesOn) {
   }
 }
 
+// A walled end (channel.ends: walls writes the runner's end walls as primitive planes like this one): the
+// coasting piece bounces off the wall at x = 0 and stays in the scene.
+TEST(LiggghtsExit, AnEndWallKeepsThePieceIn) {
+  auto dir = fresh_dir("exit_walled");
+  std::string in = scene(true);
+  const std::string floor = "fix floor all wall/gran";
+  in.insert(in.find(floor), "fix end0 all wall/gran model hertz tangential history primitive type 1 xplane 0\n");
+  ASSERT_EQ(run_liggghts(dir, in), 0) << read_text(dir / "screen_in.lmp.txt");
+  EXPECT_EQ(read_text(dir / "screen_in.lmp.txt").find("left the scene"), std::string::npos);
+  const auto rows = read_table(dir / "out.txt");
+  ASSERT_GE(rows.size(), 8u);
+  EXPECT_EQ(rows.back()[1], rows.front()[1]);  // every piece still there at t = 0.4 s
+}
+
 TEST(LiggghtsExit, WithoutItTheGuardStopsTheRun) {
   auto dir = fresh_dir("exit_none");
   EXPECT_NE(run_liggghts(dir, scene(false)), 0);

@@ -90,6 +90,30 @@ TEST(LiggghtsGuardRunner, SoftIceBelowFiveMegapascalRuns) {
   fs::remove_all(dir);
 }
 
+// channel.ends: walls puts the channel's end walls into the scene (primitive planes at x = 0 and x = length, of
+// the walls' material); the bow enters through the one at x = 0 (a mesh is not a particle) and the run completes.
+TEST(LiggghtsGuardRunner, WalledChannelEndsAreInTheSceneAndTheHullPassesThem) {
+  const fs::path dir = brash::test::fresh_dir("walled_ends");
+  write_small_case(dir / "case", "0.3", "");
+  std::string yaml = brash::test::read_text(dir / "case/case.yaml");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(yaml, m, std::regex("\n  length_m: ([^ \n]*)"))) << yaml;
+  const std::string length_m = m[1].str();
+  yaml = std::regex_replace(yaml, std::regex("\n  width_m:([^\n]*)"), "\n  width_m:$1\n  ends: walls");
+  std::ofstream(dir / "case/case.yaml") << yaml;
+  EXPECT_EQ(run_case(dir), 0) << brash::test::read_text(dir / "run.log");
+  const std::string in = brash::test::read_text(dir / "run/in.lmp");
+  EXPECT_NE(in.find("primitive type 3 xplane 0\n"), std::string::npos) << in;
+  EXPECT_NE(in.find("primitive type 3 xplane " + length_m + "\n"), std::string::npos) << in;
+  EXPECT_NE(brash::test::read_text(dir / "run/meta.json").find("\"complete\""), std::string::npos);
+  EXPECT_NE(brash::test::read_text(dir / "run/case.yaml").find("ends: walls"), std::string::npos);
+  // an open channel has none
+  write_small_case(dir / "open", "0.02", "");
+  EXPECT_EQ(brash::test::run_runner(dir / "open", dir / "open_run", dir / "open.log"), 0);
+  EXPECT_EQ(brash::test::read_text(dir / "open_run/in.lmp").find("xplane"), std::string::npos);
+  fs::remove_all(dir);
+}
+
 // fluid.hull_flow through the runner: the paper case's template keeps model added_mass, so a hull-flow case
 // is run with --model drag (the case's model checks wait for the override); without it the runner refuses,
 // naming the key. The fix gets the full hull and the hull's start and speed, and builds its table.

@@ -39,10 +39,15 @@ struct CaTableSpec {
   bool operator==(const CaTableSpec&) const = default;
 };
 
+// The channel's ends at x = 0 and x = length: open (ice pushed past them leaves the scene, as in an open
+// channel) or walls (as the end walls of an ice tank: the ice stays in the channel; the hull passes through them).
+enum class ChannelEnds { Open, Walls };
+
 // YAML spelling of each enum value (the inverse is done by the loader, with an error on unknown text).
 std::string_view to_string(IceClass v);
 std::string_view to_string(PackingMode v);
 std::string_view to_string(CaTable v);
+std::string_view to_string(ChannelEnds v);
 // YAML spelling of an added-mass table: "table1" | "text" | "zero" | "uniform <Ca>" (shortest exact number);
 // brash::core::parse_ca_table() and fix icefluid's `ca` keyword read the same text.
 std::string to_string(const CaTableSpec& v);
@@ -70,6 +75,7 @@ struct ShipSpec {
 struct ChannelSpec {
   double length_m = 21.0;                  // x in [0, length]
   double width_m = 2.25;                   // y in [-width/2, width/2]
+  ChannelEnds ends = ChannelEnds::Open;
   bool operator==(const ChannelSpec&) const = default;
 };
 

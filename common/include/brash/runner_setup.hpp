@@ -13,6 +13,7 @@ struct CaseOverrides {
   std::string model;        // fluid.model, empty = keep
   std::string treatment;    // fluid.treatment, empty = keep
   double duration_s = -1;   // run.duration_s, <= 0 = keep; the window is pulled inside a shorter run
+  std::string channel_ends;  // channel.ends, empty = keep
 };
 
 // `tag` prefixes the notes printed on stderr (e.g. "[brash-liggghts]").

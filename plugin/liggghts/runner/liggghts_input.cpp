@@ -135,6 +135,11 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
                      -0.5 * c.channel.width_m);
   s += fmt::format("fix sides2 all wall/gran model hertz tangential history primitive type 3 yplane {:.9g}\n",
                    0.5 * c.channel.width_m);
+  if (c.channel.ends == ChannelEnds::Walls)  // the hull's mesh is not a particle: it passes through them
+    s += fmt::format(
+        "fix end0 all wall/gran model hertz tangential history primitive type 3 xplane 0\n"
+        "fix end1 all wall/gran model hertz tangential history primitive type 3 xplane {:.9g}\n",
+        c.channel.length_m);
   s += fmt::format("fix mv all move/mesh mesh hull linear {:.9g} 0 0\n", c.ship.speed_m_s);
   if (sp.farfield) {
     // the wake force: a fraction of the mean piece's weight (docs/performance.md, "far field")

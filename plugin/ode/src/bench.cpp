@@ -50,7 +50,7 @@ int main(int argc, char** argv) {
       brash::run::DriverOptions d;
       d.case_path = o.case_dir;
       d.out_dir = o.out_dir;
-      d.overrides = {o.model, o.treatment, o.duration_s};
+      d.overrides = {o.model, o.treatment, o.duration_s, o.end_walls ? "walls" : ""};
       d.restart_every_s = o.restart_every_s;
       d.post = false;
       brash::ode::OdeEngine engine(o);

@@ -55,7 +55,7 @@ inline void add_run_options(CLI::App& app, RunOptions& o, std::string& implicit_
       ->check(CLI::NonNegativeNumber);
   app.add_flag("!--cull-keep-geoms", o.skips.cull_geoms,
                "cull: keep every frozen sphere in collision detection (slower, same contacts; for checking)");
-  app.add_flag("--end-walls", o.end_walls, "walls at x = 0 and x = channel length (LIGGGHTS has side walls only)");
+  app.add_flag("--end-walls", o.end_walls, "the case with channel.ends: walls (walls at x = 0 and x = length)");
   app.add_option("--settle", o.settle_s, "settle the bed this long [s] with the hull parked before t = 0")
       ->capture_default_str();
   app.add_flag("!--no-progress", o.progress, "no progress line on stderr");

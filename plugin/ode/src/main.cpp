@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
     d.resume_dir = resume_dir;
     d.out_dir = resume_dir.empty() ? o.out_dir : std::filesystem::path();
     d.runs_root = o.runs_root;
-    if (resume_dir.empty()) d.overrides = {o.model, o.treatment, o.duration_s};  // a resume: the run's own
+    if (resume_dir.empty()) d.overrides = {o.model, o.treatment, o.duration_s, o.end_walls ? "walls" : ""};  // a resume: the run's own
     d.restart_every_s = o.restart_every_s;
     d.post = !no_post;
     d.progress = o.progress;

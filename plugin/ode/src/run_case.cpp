@@ -191,7 +191,7 @@ void Stepping::build_world() {
   const double x_lo = std::min(0.0, c_.hull.start_x_m + hx0) - 0.5;
   const double x_hi = std::max(c_.channel.length_m, c_.hull.start_x_m + hx1 + c_.ship.speed_m_s * c_.run.duration_s) + 0.5;
   add_channel_walls(*w_, x_lo, x_hi, 0.5 * c_.channel.width_m, false, std::min(-1.0, hz0 - 0.1), 0.5);
-  if (o_.end_walls) {
+  if (c_.channel.ends == ChannelEnds::Walls) {
     // End walls at the channel ends, spanning only the ice layer depth so the hull passes above/through freely
     // (hull-wall pairs never collide anyway).
     w_->add_wall_box(Vec3(-0.025, 0, -0.25), Vec3(0.05, c_.channel.width_m, 1.5));

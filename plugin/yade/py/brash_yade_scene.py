@@ -9,7 +9,8 @@
 #   ice spheres from the packing CSV (FrictMat, Hertz-Mindlin with restitution via en/es),
 #   the hull STL (already clipped to the case's band, STL frame: keel z = 0, aft perpendicular x = 0) as
 #   facets shifted by (start_x, 0, -draft), moved at the case speed (Newton advances fixed bodies by vel),
-#   two side walls y = +-W/2, friction per material pair, fluid forces by the brash core (PyRunner).
+#   two side walls y = +-W/2 (and end walls at x = 0 and x = L with channel.ends: walls), friction per
+#   material pair, fluid forces by the brash core (PyRunner).
 #
 # Restart points: every restart_every_steps iterations the scene writes restart/<iteration, 10 digits>/ with
 # scene.yade (O.save, binary: O.load continues bit for bit) and state.json (the body ids of ice, hull and walls
@@ -165,10 +166,14 @@ def build(s, run_dir, steps, out_every, dump_every, restart_every):
     half_w = 0.5 * s["channel_width_m"]
     wall_ids = [O.bodies.append(wall((0, -half_w, 0), axis=1, material=m_wall)),
                 O.bodies.append(wall((0, half_w, 0), axis=1, material=m_wall))]
+    ends = s.get("channel_ends", "open")
+    if ends == "walls":  # the channel's ends as an ice tank's end walls (the hull passes through them)
+        wall_ids += [O.bodies.append(wall((0, 0, 0), axis=0, material=m_wall)),
+                     O.bodies.append(wall((s["channel_length_m"], 0, 0), axis=0, material=m_wall))]
     for i in wall_ids:
         O.bodies[i].groupMask = 3
-    log("%d spheres, %d hull facets (imported in %.1f s), 2 side walls at y = +-%.4g m"
-        % (len(ice_ids), len(hull_ids), time.time() - t0, half_w))
+    log("%d spheres, %d hull facets (imported in %.1f s), 2 side walls at y = +-%.4g m, ends %s"
+        % (len(ice_ids), len(hull_ids), time.time() - t0, half_w, ends))
 
     ids = {"ice_ids": list(ice_ids), "hull_ids": list(hull_ids), "wall_ids": wall_ids}
     fluid, outputs = setup(s, run_dir, ids, out_every, dump_every, iteration=0)

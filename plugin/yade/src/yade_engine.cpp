@@ -115,6 +115,7 @@ void YadeEngine::write_scene(const fs::path& run_dir, bool /*resume*/) {
       {"speed_m_s", c.ship.speed_m_s},
       {"channel_width_m", c.channel.width_m},
       {"channel_length_m", c.channel.length_m},
+      {"channel_ends", std::string(to_string(c.channel.ends))},
       {"friction", {{"ice_ice", c.friction.ice_ice}, {"ice_hull", c.friction.ice_hull}, {"ice_wall", c.friction.ice_wall}}},
       {"youngs_modulus_pa", c.contact.youngs_modulus_pa},
       {"poisson_ratio", c.contact.poisson_ratio},

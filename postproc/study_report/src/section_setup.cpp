@@ -55,7 +55,9 @@ std::string our_far_field(const Column& col) {
 }
 
 std::string our_channel(const Column& col) {
-  const bool walls = col.ode() && col.ode_options().value("end_walls", false);
+  // the case's channel.ends; older ODE runs recorded brash-ode's --end-walls in their options instead
+  const bool walls = col.c->channel.ends == ChannelEnds::Walls ||
+                     (col.ode() && col.ode_options().value("end_walls", false));
   return fmt::format("{:g} x {:g} m, side walls, ends {}", col.c->channel.length_m, col.c->channel.width_m,
                      walls ? "walled (x = 0 and x = length)" : "open");
 }

@@ -1,6 +1,6 @@
 // A spatial order for a set of pieces: neighbours in space become neighbours in memory. An engine that stores
 // its bodies in this order (brash-ode) walks them and their contacts with far fewer cache misses than in a
-// packing's random order (docs/performance.md, "ODE: the spheres in a spatial order"). Pieces keep their ids:
+// packing's random order (docs/ode.md, "The spheres in a spatial order"). Pieces keep their ids:
 // the order maps a storage slot to the piece's index in the packing.
 #pragma once
 #include <Eigen/Core>

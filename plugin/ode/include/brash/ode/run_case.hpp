@@ -26,7 +26,7 @@ struct RunOptions {
   double cull_wake_force_weight = -1;
   double cull_wake_speed_m_s = -1;
   ImplicitMode implicit_mode = ImplicitMode::EffectiveMass;
-  bool end_walls = false;              // walls at x = 0 and x = length (LIGGGHTS has side walls only)
+  bool end_walls = false;              // --end-walls: the case with channel.ends: walls
   double settle_s = 0;                 // simulated settling with the hull parked at start_x (not in t)
   bool progress = true;                // the engine's own lines on stderr (the driver prints progress)
   double overlap_tolerance_over_d = 1e-4;  // packing overlaps beyond this fraction of d_mean are errors
