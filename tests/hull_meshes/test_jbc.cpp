@@ -1,5 +1,5 @@
-// The generated JBC hull against NMRI's published hydrostatics (/work/shared/jbc/README.md) and the
-// FSICR bow parameters measured there on the NURBS surfaces.
+// The generated JBC hull against NMRI's published hydrostatics (the Tokyo 2015 workshop's JBC data,
+// hull_meshes/data/README.md) and the FSICR bow parameters measured on NMRI's NURBS surfaces.
 #include <brash/hull/hydrostatics.hpp>
 #include <brash/hull/jbc.hpp>
 #include <brash/hull/mesh.hpp>

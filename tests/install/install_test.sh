@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # install_test.sh SOURCE_DIR BUILD_DIR CMAKE CXX: the installed tree is relocatable and works on its own.
-#  1. cmake --install BUILD_DIR --prefix <tmp>/prefix; the layout of README.md "Install" is there;
+#  1. cmake --install BUILD_DIR --prefix <tmp>/prefix; the layout of docs/guide.md "Install" is there;
 #  2. no installed file contains the source or the build folder's path, and no link points into them;
 #  3. from a folder outside the repository, with `env -i` (no variable pointing into the source or build tree):
 #     brash-liggghts-run on <prefix>/share/brash/cases/jbc_narrow for 0.05 s on 1 rank -> meta.json complete and

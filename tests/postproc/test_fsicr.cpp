@@ -1,4 +1,5 @@
-// FSICR R_CH: the worked values of ../shared/notes/fsicr.md and every clamping rule.
+// FSICR R_CH: worked values of the Finnish-Swedish Ice Class Rules' channel resistance formula (Traficom's
+// ice class regulations) and every clamping rule.
 #include <gtest/gtest.h>
 
 #include <cmath>
