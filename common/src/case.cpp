@@ -301,7 +301,8 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
   {  // ice
     const auto s = r.section(root, "ice", {"thickness_m", "diameter_mean_m", "diameter_sd_m",
                                            "diameter_truncation_sd", "density_kg_m3", "porosity",
-                                           "packing_mode", "seed", "packing_file"});
+                                           "packing_mode", "seed", "packing_file", "settle",
+                                           "settle_speed_m_s"});
     r.num(s, "ice", "thickness_m", c.ice.thickness_m, positive, "> 0");
     r.num(s, "ice", "diameter_mean_m", c.ice.diameter_mean_m, positive, "> 0");
     c.ice.diameter_sd_m = 0.05 * c.ice.diameter_mean_m;
@@ -322,6 +323,8 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
       }
       if (!ok) r.fail(v, "ice.seed", fmt::format("expected a non-negative integer, got '{}'", v.Scalar()));
     }
+    r.boolean(s, "ice", "settle", c.ice.settle);
+    r.num(s, "ice", "settle_speed_m_s", c.ice.settle_speed_m_s, positive, "> 0");
     std::string pf = "generated/packing.csv";
     r.str(s, "ice", "packing_file", pf);
     if (pf.empty()) r.fail(s["packing_file"], "ice.packing_file", "must not be empty");
@@ -580,6 +583,10 @@ std::string dump_case_yaml(const Case& c) {
   line("  ", "packing_mode", std::string(to_string(c.ice.packing_mode)));
   line("  ", "seed", fmt::format("{}", c.ice.seed));
   line("  ", "packing_file", yaml_quoted(c.ice.packing_file.string()));
+  if (c.ice.settle) {
+    line("  ", "settle", "true");
+    line("  ", "settle_speed_m_s", num(c.ice.settle_speed_m_s));
+  }
   o += "water:\n";
   line("  ", "density_kg_m3", num(c.water.density_kg_m3));
   line("  ", "level_m", num(c.water.level_m));

@@ -485,12 +485,10 @@ void write_packing_json(const fs::path& file, const PackingStats& s) { write_ato
 namespace {
 
 // Overlapping spheres in a packing read from a file: the first pair (in file order) whose overlap
-// exceeds kReadOverlapTolerance of the smaller diameter is an error. A DEM engine would start with a
-// huge contact force there (the generator's beds overlap by < 1e-6 d). Hash grid, cell = largest d.
-constexpr double kReadOverlapTolerance = 1e-4;
-
+// exceeds `tolerance` of the smaller diameter is an error. A DEM engine would start with a huge contact force
+// there (the generator's beds overlap by < 1e-6 d). Hash grid, cell = largest d.
 void check_no_overlap(const fs::path& file, const std::vector<Sphere>& s, const std::vector<std::size_t>& lines,
-                      const std::vector<double>& ids) {
+                      const std::vector<double>& ids, double tolerance) {
   if (s.size() < 2) return;
   double dmax = 0;
   for (const auto& b : s) dmax = std::max(dmax, b.diameter_m);
@@ -513,12 +511,12 @@ void check_no_overlap(const fs::path& file, const std::vector<Sphere>& s, const 
             const auto& b = s[m];
             const double dx = a.x_m - b.x_m, dy = a.y_m - b.y_m, dz = a.z_m - b.z_m;
             const double ov = 0.5 * (a.diameter_m + b.diameter_m) - std::sqrt(dx * dx + dy * dy + dz * dz);
-            if (ov > kReadOverlapTolerance * std::min(a.diameter_m, b.diameter_m))
+            if (ov > tolerance * std::min(a.diameter_m, b.diameter_m))
               throw InputError(fmt::format(
                   "{}:{}: sphere id {:g} overlaps sphere id {:g} (line {}) by {:.3g} m = {:.3g} of its diameter "
                   "(tolerance {:g}); a packing must not overlap (regenerate it with brash-pack)",
                   file.string(), lines[n], ids[n], ids[m], lines[m], ov, ov / std::min(a.diameter_m, b.diameter_m),
-                  kReadOverlapTolerance));
+                  tolerance));
           }
         }
     grid[key(ci, cj, ck)].push_back(n);
@@ -536,7 +534,7 @@ struct PackingRows {
   std::vector<double> ids;
 };
 
-PackingRows read_rows(const fs::path& file) {
+PackingRows read_rows(const fs::path& file, double overlap_tolerance_over_d = kPackingMaxOverlapOverD) {
   if (fs::is_directory(file)) throw InputError(file.string() + ": is a directory, not a packing file");
   std::ifstream in(file);
   if (!in) throw InputError(file.string() + ": cannot open packing file");
@@ -577,7 +575,7 @@ PackingRows read_rows(const fs::path& file) {
     rows.ids.push_back(v[0]);
   }
   if (!header) throw InputError(file.string() + ": no 'id,x,y,z,diameter' header");
-  check_no_overlap(file, rows.spheres, rows.lines, rows.ids);
+  check_no_overlap(file, rows.spheres, rows.lines, rows.ids, overlap_tolerance_over_d);
   return rows;
 }
 
@@ -585,15 +583,17 @@ PackingRows read_rows(const fs::path& file) {
 
 std::vector<Sphere> read_packing_csv(const fs::path& file) { return read_rows(file).spheres; }
 
-std::vector<Sphere> read_case_packing(const Case& c) {
+std::vector<Sphere> read_case_packing(const Case& c, double max_overlap_over_d) {
   const fs::path& file = c.ice.packing_file;
-  PackingRows rows = read_rows(file);
+  PackingRows rows = read_rows(file, max_overlap_over_d);
   const double L = c.channel.length_m, half_w = 0.5 * c.channel.width_m, level = c.water.level_m;
   const double above = kPackingMaxBottomAboveWaterOverD * c.ice.diameter_mean_m;
   const double below = kPackingMaxCentreBelowWaterOverThickness * c.ice.thickness_m;
   for (std::size_t n = 0; n < rows.spheres.size(); ++n) {
     const Sphere& b = rows.spheres[n];
-    const double r = 0.5 * b.diameter_m, tol = kPackingChannelToleranceOverD * b.diameter_m;
+    // a settled bed's pieces rest against the walls as against each other: the same overlap is allowed there
+    const double r = 0.5 * b.diameter_m,
+                 tol = std::max(kPackingChannelToleranceOverD, max_overlap_over_d) * b.diameter_m;
     const auto where = [&] {
       return fmt::format("{}:{}: piece id {:g} (x {:g}, y {:g}, z {:g} m, d {:g} m)", file.string(), rows.lines[n],
                          rows.ids[n], b.x_m, b.y_m, b.z_m, b.diameter_m);

@@ -326,6 +326,20 @@ TEST(CaseLoader, ChannelEndsAreOpenUnlessWalledByTheCaseOrTheCommandLine) {
   expect_error("name: x\nchannel: {ends: closed}\n", {"channel.ends", "closed", "open | walls"});
 }
 
+TEST(CaseLoader, SettleIsOffUnlessAskedAndItsSpeedPositive) {
+  const Case d = brash::parse_case("name: x\n", kRepo, "mem");
+  EXPECT_FALSE(d.ice.settle);
+  EXPECT_EQ(brash::dump_case_yaml(d).find("settle"), std::string::npos);  // an unsettled case's file is unchanged
+  const Case s = brash::parse_case("name: x\nice: {settle: true, settle_speed_m_s: 0.002}\n", kRepo, "mem");
+  EXPECT_TRUE(s.ice.settle);
+  EXPECT_EQ(s.ice.settle_speed_m_s, 0.002);
+  const Case again = brash::parse_case(brash::dump_case_yaml(s), kRepo, "[dump]");
+  EXPECT_TRUE(again.ice.settle);
+  EXPECT_EQ(again.ice.settle_speed_m_s, 0.002);
+  expect_error("name: x\nice: {settle: maybe}\n", {"ice.settle"});
+  expect_error("name: x\nice: {settle_speed_m_s: 0}\n", {"ice.settle_speed_m_s", "> 0"});
+}
+
 TEST(CaseLoaderErrors, NaNAndInfinity) {
   expect_error("name: x\nship: {speed_m_s: .nan}\n", {"ship.speed_m_s", "finite"});
   expect_error("name: x\nfriction: {ice_ice: .inf}\n", {"friction.ice_ice", "finite"});

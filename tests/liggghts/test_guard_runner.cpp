@@ -12,7 +12,9 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <sys/wait.h>
 #include <string>
+#include <vector>
 
 #include "runner_case.h"
 
@@ -111,6 +113,46 @@ TEST(LiggghtsGuardRunner, WalledChannelEndsAreInTheSceneAndTheHullPassesThem) {
   write_small_case(dir / "open", "0.02", "");
   EXPECT_EQ(brash::test::run_runner(dir / "open", dir / "open_run", dir / "open.log"), 0);
   EXPECT_EQ(brash::test::read_text(dir / "open_run/in.lmp").find("xplane"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+// ice.settle: the runner starts from the settled bed, made once by brash-settle beside the packing (its rms speed
+// below ice.settle_speed_m_s, the same bytes when made again), reused by the next run; ODE refuses the key.
+TEST(LiggghtsGuardRunner, SettledBedIsMadeOnceCachedAndStartedFrom) {
+  const fs::path dir = brash::test::fresh_dir("settled_bed");
+  write_small_case(dir / "case", "0.05", "");
+  std::string yaml = brash::test::read_text(dir / "case/case.yaml");
+  yaml = std::regex_replace(yaml, std::regex("\nice:"), "\nice:\n  settle: true");
+  std::ofstream(dir / "case/case.yaml") << yaml;
+  EXPECT_EQ(run_case(dir), 0) << brash::test::read_text(dir / "run.log");
+  std::vector<fs::path> settled;
+  for (const auto& e : fs::directory_iterator(dir / "case/generated"))
+    if (e.path().extension() == ".csv" && e.path().filename().string().rfind("settled-", 0) == 0)
+      settled.push_back(e.path());
+  ASSERT_EQ(settled.size(), 1u);
+  const std::string bed = brash::test::read_text(settled[0]);
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(bed, m, std::regex("vrms_m_s=([0-9.eE+-]+)"))) << bed.substr(0, 300);
+  EXPECT_LT(std::stod(m[1].str()), 1e-3);
+  EXPECT_NE(brash::test::read_text(dir / "run.log").find("settling the packing"), std::string::npos);
+  // the run starts from it: its scene's pieces are the settled ones, not the packing's
+  const std::string data = brash::test::read_text(dir / "run/packing.data");
+  std::smatch first;
+  ASSERT_TRUE(std::regex_search(bed, first, std::regex("\n1,([^,]+),")));
+  EXPECT_NE(data.find(" " + first[1].str() + " "), std::string::npos);
+  // cached: a second run does not settle again; made again, the bed is the same to the byte
+  ASSERT_EQ(brash::test::run_runner(dir / "case", dir / "run2", dir / "run2.log"), 0);
+  EXPECT_EQ(brash::test::read_text(dir / "run2.log").find("settling the packing"), std::string::npos);
+  fs::remove(settled[0]);
+  ASSERT_EQ(brash::test::run_runner(dir / "case", dir / "run3", dir / "run3.log"), 0);
+  EXPECT_EQ(brash::test::read_text(settled[0]), bed);
+  // ODE starts from the packing only: the key is refused by name before anything runs
+  const std::string ode = std::string(BRASH_BIN_DIR) + "/brash-ode '" + (dir / "case").string() + "' --out '" +
+                          (dir / "ode").string() + "' --no-post > '" + (dir / "ode.log").string() + "' 2>&1";
+  EXPECT_EQ(WEXITSTATUS(std::system(ode.c_str())), 2);
+  EXPECT_NE(brash::test::read_text(dir / "ode.log").find("ice.settle: true"), std::string::npos)
+      << brash::test::read_text(dir / "ode.log");
+  EXPECT_FALSE(fs::exists(dir / "ode/meta.json"));
   fs::remove_all(dir);
 }
 

@@ -89,6 +89,10 @@ struct IceSpec {
   PackingMode packing_mode = PackingMode::Volume;
   std::uint64_t seed = 1;
   std::filesystem::path packing_file;      // absolute; default <case>/generated/packing.csv
+  // Start from the packing settled first: floated with no ship and closed channel ends until the pieces' rms
+  // speed is below settle_speed_m_s (brash-settle; cached beside the packing, brash/settle.hpp).
+  bool settle = false;
+  double settle_speed_m_s = 1.0e-3;
   bool operator==(const IceSpec&) const = default;
 };
 

@@ -103,9 +103,16 @@ inline constexpr double kPackingChannelToleranceOverD = 1e-4;
 inline constexpr double kPackingMaxBottomAboveWaterOverD = 1.0;
 inline constexpr double kPackingMaxCentreBelowWaterOverThickness = 5.0;
 
+// Largest overlap of two pieces a packing file may hold, as a fraction of the smaller diameter: a generated packing
+// (< 1e-6 d; a DEM engine would start with a huge contact force at a larger one), and a settled bed (ice.settle,
+// brash/settle.hpp), whose pieces rest in contact: Hertz overlaps under a piece's weight are ~0.8 % of d at the
+// paper case's E / 16, 2 % at E / 64 (docs/performance.md, "Softer contacts").
+inline constexpr double kPackingMaxOverlapOverD = 1e-4;
+inline constexpr double kSettledBedMaxOverlapOverD = 0.05;
+
 // Reads the case's packing (c.ice.packing_file) as read_packing_csv and checks every piece against the case as above:
 // InputError naming the packing file, the line, the piece and the case key. Every engine runner reads its packing
 // through this, before it makes the run directory.
-std::vector<Sphere> read_case_packing(const Case& c);
+std::vector<Sphere> read_case_packing(const Case& c, double max_overlap_over_d = kPackingMaxOverlapOverD);
 
 }  // namespace brash

@@ -10,6 +10,7 @@
 
 #include "brash/error.hpp"
 #include "brash/run_layout.hpp"
+#include "brash/settle.hpp"
 #include "record.hpp"
 #include "run_monitor.hpp"
 #include "stop_signals.hpp"
@@ -173,7 +174,14 @@ int drive(Engine& engine, const DriverOptions& o) {
     const fs::path case_file = case_file_of(o);
     const Case c = load_run_case(o, tag);
     prepare_case_inputs(c, case_file, tag);
-    const auto spheres = read_case_packing(c);  // checked against the case before any output
+    if (c.ice.settle && !engine.starts_from_settled_bed())
+      throw InputError(fmt::format("{}: ice.settle: true: the settled bed is made and measured on LIGGGHTS "
+                                   "(brash-liggghts-run); {} starts from the packing (ice.settle: false)",
+                                   case_file.string(), engine.runner()));
+    Case start = c;  // the packing, or its settled bed (ice.settle, brash/settle.hpp)
+    start.ice.packing_file = starting_packing(c, tag);
+    const auto spheres = read_case_packing(  // checked against the case before any output
+        start, c.ice.settle ? kSettledBedMaxOverlapOverD : kPackingMaxOverlapOverD);
     engine.load(c, case_file, spheres);
     if (resume) {
       lock.emplace(o.resume_dir);  // a run still going is refused before anything is touched

@@ -20,6 +20,7 @@ class LiggghtsEngine final : public run::Engine {
       : ranks_(ranks), restart_every_s_(restart_every_s), launch_prefix_(std::move(launch_prefix)) {}
   std::string name() const override { return "liggghts"; }
   std::string runner() const override { return "brash-liggghts-run"; }
+  bool starts_from_settled_bed() const override { return true; }
   nlohmann::json meta() const override;
   void load(const Case& c, const std::filesystem::path& case_file, const std::vector<Sphere>& spheres) override;
   void write_scene(const std::filesystem::path& run_dir, bool resume) override;

@@ -70,36 +70,15 @@ std::string data_file(const std::vector<Sphere>& spheres, const Box& box, double
   return s;
 }
 
-std::string input_script(const Case& c, const Box& box, const SceneOptions& opt) {
-  const double dt = c.run.timestep_s;
-  const long steps = std::lround(opt.duration_s / dt);
-  const long out_every = std::max(1L, std::lround(c.run.output_interval_s / dt));
-  const long dump_every = std::max(1L, std::lround(c.run.dump_interval_s / dt));
-  const long thermo_every = std::max(1L, steps / 200);
+namespace {
+
+// fix property/global lines of the material types: 1 ice, 2 hull, 3 channel walls (4: the symmetry plane y = 0,
+// frictionless against ice, with speedups.symmetry_y)
+std::string material_lines(const Case& c, bool symmetry_y) {
   const auto& f = c.friction;
   const double e = c.contact.restitution;
   std::string s;
-  s += "# brash: LIGGGHTS scene written by brash-liggghts-run for case " + c.name + "\n";
-  // Spatial sort of the atoms every 1000 steps, bins of half the neighbour cutoff (LAMMPS' default size, given
-  // explicitly: the default is derived from a cutoff that is 0 while the box is empty). Pair and neighbour loops
-  // then walk memory in order: ~2.2x faster on the paper scene (docs/performance.md "Atom sorting").
-  const double sort_bin_m = max_radius_m(c) + 0.5 * c.speedups.neighbor_skin_d * c.ice.diameter_mean_m;
-  s += fmt::format("atom_style granular\natom_modify map array sort 1000 {:.6g}\nboundary f f f\nnewton off\n",
-                   sort_bin_m);
-  s += "communicate single vel yes\nunits si\n";
-  // LIGGGHTS refuses E < 5 MPa in SI units unless told otherwise; softer ice is a legitimate speed knob (the
-  // time-step guard still checks dt against the Rayleigh time of the softer contact).
-  if (c.contact.youngs_modulus_pa < 5.0e6) s += "soft_particles yes\n";
-  s += opt.ranks > 1 ? "processors 1 * 1\n" : "";
-  s += opt.restart_file.empty() ? std::string("read_data packing.data\n") : "read_restart " + opt.restart_file + "\n";
-  // speedups (docs/performance.md): idle far-field ice lives in group `idle`, the rest in `active`
-  const auto& sp = c.speedups;
-  const std::string moving = sp.farfield ? "active" : "all";
-  if (sp.farfield) s += "group active type 1\ngroup idle subtract all all\n";
-  const double skin_m = sp.neighbor_skin_d * c.ice.diameter_mean_m;
-  s += fmt::format("neighbor {:.6g} bin\nneigh_modify delay 0{}\n", skin_m,
-                   sp.farfield ? " exclude group idle idle" : "");
-  if (!sp.symmetry_y) {
+  if (!symmetry_y) {
     s += fmt::format(
         "fix m1 all property/global youngsModulus peratomtype {0:g} {0:g} {0:g}\n"
         "fix m2 all property/global poissonsRatio peratomtype {1:g} {1:g} {1:g}\n"
@@ -118,6 +97,45 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
         "{5:g} {4:g} {5:g} 0 0 0 0 0\n",
         c.contact.youngs_modulus_pa, c.contact.poisson_ratio, e, f.ice_ice, f.ice_hull, f.ice_wall);
   }
+  return s;
+}
+
+// the scene's opening lines up to and including read_data (or read_restart)
+std::string opening_lines(const Case& c, const std::string& read_line, int ranks) {
+  // Spatial sort of the atoms every 1000 steps, bins of half the neighbour cutoff (LAMMPS' default size, given
+  // explicitly: the default is derived from a cutoff that is 0 while the box is empty). Pair and neighbour loops
+  // then walk memory in order: ~2.2x faster on the paper scene (docs/performance.md "Atom sorting").
+  const double sort_bin_m = max_radius_m(c) + 0.5 * c.speedups.neighbor_skin_d * c.ice.diameter_mean_m;
+  std::string s = fmt::format(
+      "atom_style granular\natom_modify map array sort 1000 {:.6g}\nboundary f f f\nnewton off\n", sort_bin_m);
+  s += "communicate single vel yes\nunits si\n";
+  // LIGGGHTS refuses E < 5 MPa in SI units unless told otherwise; softer ice is a legitimate speed knob (the
+  // time-step guard still checks dt against the Rayleigh time of the softer contact).
+  if (c.contact.youngs_modulus_pa < 5.0e6) s += "soft_particles yes\n";
+  s += ranks > 1 ? "processors 1 * 1\n" : "";
+  return s + read_line + "\n";
+}
+
+}  // namespace
+
+std::string input_script(const Case& c, const Box& box, const SceneOptions& opt) {
+  const double dt = c.run.timestep_s;
+  const long steps = std::lround(opt.duration_s / dt);
+  const long out_every = std::max(1L, std::lround(c.run.output_interval_s / dt));
+  const long dump_every = std::max(1L, std::lround(c.run.dump_interval_s / dt));
+  const long thermo_every = std::max(1L, steps / 200);
+  std::string s;
+  s += "# brash: LIGGGHTS scene written by brash-liggghts-run for case " + c.name + "\n";
+  s += opening_lines(c, opt.restart_file.empty() ? "read_data packing.data" : "read_restart " + opt.restart_file,
+                     opt.ranks);
+  // speedups (docs/performance.md): idle far-field ice lives in group `idle`, the rest in `active`
+  const auto& sp = c.speedups;
+  const std::string moving = sp.farfield ? "active" : "all";
+  if (sp.farfield) s += "group active type 1\ngroup idle subtract all all\n";
+  const double skin_m = sp.neighbor_skin_d * c.ice.diameter_mean_m;
+  s += fmt::format("neighbor {:.6g} bin\nneigh_modify delay 0{}\n", skin_m,
+                   sp.farfield ? " exclude group idle idle" : "");
+  s += material_lines(c, sp.symmetry_y);
   s += "pair_style gran model hertz tangential history\npair_coeff * *\n";
   s += fmt::format("timestep {:.9g}\n", dt);
   // Hull: STL frame has the keel at z = 0 and x = 0 at the aft perpendicular.
@@ -205,6 +223,47 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
       sp.farfield ? " f_farfield[1]" : "", thermo_every);
   s += fmt::format("run {}{}\n", steps, opt.restart_file.empty() ? "" : " upto");  // upto: to the same end step
   s += "write_restart restart/final.restart\n";
+  return s;
+}
+
+std::string settle_script(const Case& c, const Box& box, long chunk_steps, long max_chunks) {
+  const double skin_m = c.speedups.neighbor_skin_d * c.ice.diameter_mean_m;
+  std::string s = "# brash: settling deck written by brash-settle for case " + c.name + "\n";
+  s += opening_lines(c, "read_data packing.data", 1);
+  s += fmt::format("neighbor {:.6g} bin\nneigh_modify delay 0\n", skin_m);
+  s += material_lines(c, false);
+  s += "pair_style gran model hertz tangential history\npair_coeff * *\n";
+  s += fmt::format("timestep {:.9g}\n", c.run.timestep_s);
+  // closed: side walls and end walls (the bed must not spread through open ends while it settles)
+  const char* wall = "wall/gran model hertz tangential history primitive type 3";
+  s += fmt::format("fix sides all {0} yplane {1:.9g}\nfix sides2 all {0} yplane {2:.9g}\n", wall,
+                   -0.5 * c.channel.width_m, 0.5 * c.channel.width_m);
+  s += fmt::format("fix end0 all {0} xplane 0\nfix end1 all {0} xplane {1:.9g}\n", wall, c.channel.length_m);
+  s += "fix integr all nve/sphere\n";
+  s += fmt::format("fix grav all gravity {:.9g} vector 0 0 -1\n", c.water.gravity_m_s2);
+  // Preparation only: a floating bed bobs for seconds (the fluid model's drag, quadratic in the speed, barely
+  // damps mm/s motion, and it radiates no waves), so the settling adds viscous damping with a time of 0.1 s on
+  // the mean piece; the run itself starts from the settled positions at rest, without it.
+  const double mean_mass_kg = c.ice.density_kg_m3 * sphere_volume_m3(c.ice.diameter_mean_m);
+  s += fmt::format("fix damp all viscous {:.9g}\n", mean_mass_kg / 0.1);
+  const auto lim = guard::limits_for_case(c, {box.xlo, box.xhi, box.ylo, box.yhi, box.zlo, box.zhi});
+  const auto& gb = *lim.box;
+  s += fmt::format(
+      "fix guard all brash/guard every {} box {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} zmax {:.9g} ke_max {:.6g} "
+      "youngs {:g} poisson {:g} max_dt_fraction {:g}\n",
+      c.guards.every_steps, gb[0], gb[1], gb[2], gb[3], gb[4], gb[5], *lim.z_max_m, *lim.ke_max_J,
+      c.contact.youngs_modulus_pa, c.contact.poisson_ratio, kMaxTimestepOverRayleigh);
+  s += fmt::format("fix fl all icefluid {} output_every {}\n", icefluid_arguments(brash::fluid_params(c)),
+                   chunk_steps * max_chunks + 1);
+  // the rms speed of the pieces from their translational kinetic energy (thermo evaluates c_k at each chunk's
+  // last step, so the variable is current between runs)
+  s += "compute k all ke\nvariable vrms equal sqrt(2*c_k/mass(all))\nvariable t equal step*dt\n";
+  s += fmt::format("thermo_style custom step v_t atoms c_k v_vrms\nthermo {}\nthermo_modify norm no\n", chunk_steps);
+  s += fmt::format("variable chunk loop {}\nlabel next_chunk\nrun {}\n", max_chunks, chunk_steps);
+  s += fmt::format("if \"${{vrms}} < {:.9g}\" then \"jump SELF settled\"\n", c.ice.settle_speed_m_s);
+  s += "next chunk\njump SELF next_chunk\nlabel settled\n";
+  s += "print \"brash-settle: t ${t} vrms ${vrms}\"\n";
+  s += "dump final all custom 1 settled.dump id x y z radius\ndump_modify final sort id\nrun 0\n";
   return s;
 }
 

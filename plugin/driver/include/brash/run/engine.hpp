@@ -53,6 +53,9 @@ class Engine {
   virtual std::string name() const = 0;     // "liggghts": run directory names, meta.json "engine"
   virtual std::string runner() const = 0;   // the command a user resumes with, e.g. "brash-liggghts-run"
   virtual nlohmann::json meta() const = 0;  // engine_version, ranks, threads, stepper settings ...
+  // Whether a run may start from the settled bed (ice.settle): it is made with LIGGGHTS' soft contacts, whose
+  // equilibrium overlaps a rigid-contact engine would push apart.
+  virtual bool starts_from_settled_bed() const { return false; }
 
   // Checks the case against what this engine can run and reads what the scene needs (hull, packing), before
   // any output is written. Throws InputError naming the case file.
