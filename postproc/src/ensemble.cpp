@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include <cstdint>
+
 #include <brash/stats/paired.hpp>
 
 namespace brash::post {
@@ -72,9 +74,18 @@ std::vector<EnsemblePair> read_ensemble(const EnsembleSpec& spec) {
   return pairs;
 }
 
+std::string ensemble_file_name(const std::string& run_name_a, const std::string& run_name_b) {
+  const std::string stem = fmt::format("ensemble-{}-vs-{}", run_name_a, run_name_b);
+  constexpr std::size_t kMaxName = 200, kHashed = kMaxName - 22;  // "-" + 16 hex + ".json"
+  if (stem.size() + 5 <= kMaxName) return stem + ".json";
+  std::uint64_t h = 1469598103934665603ULL;  // FNV-1a of the whole stem
+  for (const unsigned char ch : stem) h = (h ^ ch) * 1099511628211ULL;
+  return fmt::format("{}-{:016x}.json", stem.substr(0, kHashed), h);
+}
+
 EnsembleSummary summarize_ensemble(const EnsembleSpec& spec, const std::vector<EnsemblePair>& pairs) {
   EnsembleSummary out;
-  out.json_path = spec.dir / fmt::format("ensemble-{}-vs-{}.json", spec.a.run_name, spec.b.run_name);
+  out.json_path = spec.dir / ensemble_file_name(spec.a.run_name, spec.b.run_name);
   const std::string la = spec.a.label.empty() ? spec.a.run_name : spec.a.label;
   const std::string lb = spec.b.label.empty() ? spec.b.run_name : spec.b.label;
   auto& t = out.text;

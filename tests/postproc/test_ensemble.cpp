@@ -17,6 +17,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "brash/post/ensemble.hpp"
+
 namespace fs = std::filesystem;
 using nlohmann::json;
 
@@ -181,4 +183,18 @@ TEST(PairedEnsemble, MissingWallTimeIsNull) {
   EXPECT_TRUE(s["wall_a_s"].is_null());
   EXPECT_TRUE(s["speedup"].is_null());
   EXPECT_NEAR(s["diff_rel"].get<double>(), 0.5 * (1 / 10.5 + 1 / 20.5), 1e-15);
+}
+
+TEST(PairedEnsemble, LongSideNamesGiveAShortDistinctFileName) {
+  using brash::post::ensemble_file_name;
+  EXPECT_EQ(ensemble_file_name("np1", "np2"), "ensemble-np1-vs-np2.json");
+  const std::string a = "np1-contact.youngs_modulus_pa_3.125e5_run.timestep_s_8.0e-4_ice.settle_true";
+  const std::string b = a + "_speedups.farfield_true_speedups.farfield_ahead_m_0.3_speedups.farfield_behind_m_1.0_"
+                            "speedups.farfield_every_steps_100_speedups.farfield_wake_force_weight_";
+  const std::string one = ensemble_file_name(a, b + "1e-3"), two = ensemble_file_name(a, b + "0");
+  EXPECT_EQ(one.size(), 200u);
+  EXPECT_NE(one, two);                                       // the hash tells sides apart beyond the cut
+  EXPECT_EQ(one, ensemble_file_name(a, b + "1e-3"));         // and names a summary the same way every time
+  EXPECT_EQ(one.rfind("ensemble-" + a + "-vs-", 0), 0u);     // bench/pareto_plot.sh globs ensemble-<A>-vs-*.json
+  EXPECT_TRUE(one.ends_with(".json"));
 }

@@ -53,4 +53,9 @@ struct EnsembleSummary {
 
 EnsembleSummary summarize_ensemble(const EnsembleSpec& spec, const std::vector<EnsemblePair>& pairs);
 
+// The summary's file name: ensemble-<A>-vs-<B>.json, or where that is longer than 200 bytes (a file name holds
+// at most 255, and write_atomic adds a temporary suffix) its first 178 bytes, '-' and 16 hex digits of a hash of
+// the whole name. brash-study finds a summary by its sides, not its name.
+std::string ensemble_file_name(const std::string& run_name_a, const std::string& run_name_b);
+
 }  // namespace brash::post
