@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <brash/core/fnv1a.hpp>
 #include <brash/hull/flow.hpp>
 #include <brash/hull/panel_flow.hpp>
 #include <cstdint>
@@ -14,11 +15,8 @@ namespace {
 
 // FNV-1a over the mesh's bytes: any change of the hull changes the key
 std::uint64_t mesh_hash(const hull::Mesh& mesh) {
-  std::uint64_t h = 1469598103934665603ull;
-  auto add = [&](const void* p, std::size_t n) {
-    const auto* b = static_cast<const unsigned char*>(p);
-    for (std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
-  };
+  std::uint64_t h = core::kFnv1aOffset;
+  auto add = [&](const void* p, std::size_t n) { h = core::fnv1a({static_cast<const char*>(p), n}, h); };
   for (const auto& v : mesh.vertices) add(v.data(), 3 * sizeof(double));
   for (const auto& f : mesh.faces) add(f.data(), 3 * sizeof(int));
   return h;

@@ -8,6 +8,7 @@
 #include <iterator>
 
 #include "brash/error.hpp"
+#include "brash/core/fnv1a.hpp"
 #include "brash/runner_setup.hpp"
 
 namespace fs = std::filesystem;
@@ -31,12 +32,7 @@ fs::path settled_packing_file(const Case& c) {
   std::ifstream in(c.ice.packing_file, std::ios::binary);
   if (!in) throw InputError(c.ice.packing_file.string() + ": cannot open packing file");
   const std::string bytes{std::istreambuf_iterator<char>(in), {}};
-  std::uint64_t h = 1469598103934665603ULL;  // FNV-1a
-  const auto mix = [&h](const std::string& text) {
-    for (const unsigned char ch : text) h = (h ^ ch) * 1099511628211ULL;
-  };
-  mix(bytes);
-  mix(settle_inputs(c));
+  const std::uint64_t h = core::fnv1a(settle_inputs(c), core::fnv1a(bytes));
   return c.ice.packing_file.parent_path() / fmt::format("settled-{:016x}.csv", h);
 }
 

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 
+#include <brash/core/fnv1a.hpp>
 #include <brash/stats/paired.hpp>
 
 namespace brash::post {
@@ -78,9 +79,7 @@ std::string ensemble_file_name(const std::string& run_name_a, const std::string&
   const std::string stem = fmt::format("ensemble-{}-vs-{}", run_name_a, run_name_b);
   constexpr std::size_t kMaxName = 200, kHashed = kMaxName - 22;  // "-" + 16 hex + ".json"
   if (stem.size() + 5 <= kMaxName) return stem + ".json";
-  std::uint64_t h = 1469598103934665603ULL;  // FNV-1a of the whole stem
-  for (const unsigned char ch : stem) h = (h ^ ch) * 1099511628211ULL;
-  return fmt::format("{}-{:016x}.json", stem.substr(0, kHashed), h);
+  return fmt::format("{}-{:016x}.json", stem.substr(0, kHashed), core::fnv1a(stem));
 }
 
 EnsembleSummary summarize_ensemble(const EnsembleSpec& spec, const std::vector<EnsemblePair>& pairs) {

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "brash/core/fnv1a.hpp"
 #include "brash/run_layout.hpp"
 
 namespace brash::ode::restart {
@@ -26,14 +27,6 @@ long step_of(const fs::path& p) {
 }
 }  // namespace
 
-std::uint64_t fnv1a(const std::string& bytes) {
-  std::uint64_t h = 1469598103934665603ULL;
-  for (unsigned char c : bytes) {
-    h ^= c;
-    h *= 1099511628211ULL;
-  }
-  return h;
-}
 
 std::string seal(const std::string& payload) {
   Writer w;
@@ -43,7 +36,7 @@ std::string seal(const std::string& payload) {
   out += w.bytes();
   out += payload;
   Writer t;
-  t.put<std::uint64_t>(fnv1a(payload));
+  t.put<std::uint64_t>(core::fnv1a(payload));
   out += t.bytes();
   out.append(kEnd, 4);
   return out;
@@ -64,7 +57,7 @@ std::string unseal(const std::string& b, const std::string& name) {
   std::string payload = b.substr(kHead, n);
   std::uint64_t sum;
   std::memcpy(&sum, b.data() + kHead + n, 8);
-  if (sum != fnv1a(payload) || std::memcmp(b.data() + kHead + n + 8, kEnd, 4) != 0)
+  if (sum != core::fnv1a(payload) || std::memcmp(b.data() + kHead + n + 8, kEnd, 4) != 0)
     throw std::runtime_error(fmt::format("{}: checksum mismatch (corrupt file)", name));
   return payload;
 }

@@ -74,7 +74,6 @@ class Reader {
   std::size_t pos_ = 0;
 };
 
-std::uint64_t fnv1a(const std::string& bytes);
 std::string seal(const std::string& payload);
 // Returns the payload; throws std::runtime_error naming `name` and the defect.
 std::string unseal(const std::string& file_bytes, const std::string& name);
