@@ -116,6 +116,32 @@ std::string opening_lines(const Case& c, const std::string& read_line, int ranks
   return s + read_line + "\n";
 }
 
+constexpr const char* kWall = "wall/gran model hertz tangential history primitive";
+
+// the channel's walls of the walls' material (type 3): at y = +-width/2 (at y = 0 the symmetry plane, type 4,
+// instead of the one at -width/2) and, with end walls, at x = 0 and x = length
+std::string wall_lines(const Case& c, bool symmetry_y, bool end_walls) {
+  std::string s =
+      symmetry_y ? fmt::format("fix sides all {} type 4 yplane 0\n", kWall)
+                 : fmt::format("fix sides all {} type 3 yplane {:.9g}\n", kWall, -0.5 * c.channel.width_m);
+  s += fmt::format("fix sides2 all {} type 3 yplane {:.9g}\n", kWall, 0.5 * c.channel.width_m);
+  // the hull's mesh is not a particle: it passes through the end walls
+  if (end_walls)
+    s += fmt::format("fix end0 all {0} type 3 xplane 0\nfix end1 all {0} type 3 xplane {1:.9g}\n", kWall,
+                     c.channel.length_m);
+  return s;
+}
+
+// fix brash/guard's common arguments (no newline): every check but the hull's (brash::guard, docs/stability.md)
+std::string guard_command(const Case& c, const guard::Limits& lim) {
+  const auto& gb = *lim.box;
+  return fmt::format(
+      "fix guard all brash/guard every {} box {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} zmax {:.9g} "
+      "ke_max {:.6g} youngs {:g} poisson {:g} max_dt_fraction {:g}",
+      c.guards.every_steps, gb[0], gb[1], gb[2], gb[3], gb[4], gb[5], *lim.z_max_m, *lim.ke_max_J,
+      c.contact.youngs_modulus_pa, c.contact.poisson_ratio, kMaxTimestepOverRayleigh);
+}
+
 }  // namespace
 
 std::string input_script(const Case& c, const Box& box, const SceneOptions& opt) {
@@ -146,18 +172,7 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
                    "reference_point 0 0 0\n",
                    opt.hull_file, hull_x0, -c.hull.draft_m);
   s += "fix hullwall all wall/gran model hertz tangential history mesh n_meshes 1 meshes hull\n";
-  if (sp.symmetry_y)
-    s += "fix sides all wall/gran model hertz tangential history primitive type 4 yplane 0\n";
-  else
-    s += fmt::format("fix sides all wall/gran model hertz tangential history primitive type 3 yplane {:.9g}\n",
-                     -0.5 * c.channel.width_m);
-  s += fmt::format("fix sides2 all wall/gran model hertz tangential history primitive type 3 yplane {:.9g}\n",
-                   0.5 * c.channel.width_m);
-  if (c.channel.ends == ChannelEnds::Walls)  // the hull's mesh is not a particle: it passes through them
-    s += fmt::format(
-        "fix end0 all wall/gran model hertz tangential history primitive type 3 xplane 0\n"
-        "fix end1 all wall/gran model hertz tangential history primitive type 3 xplane {:.9g}\n",
-        c.channel.length_m);
+  s += wall_lines(c, sp.symmetry_y, c.channel.ends == ChannelEnds::Walls);
   s += fmt::format("fix mv all move/mesh mesh hull linear {:.9g} 0 0\n", c.ship.speed_m_s);
   if (sp.farfield) {
     // the wake force: a fraction of the mean piece's weight (docs/performance.md, "far field")
@@ -180,11 +195,7 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
   // (start_x, 0, -draft) at t = 0, moving with the ship like fix mv)
   const auto lim = guard::limits_for_case(c, {box.xlo, box.xhi, box.ylo, box.yhi, box.zlo, box.zhi});
   const auto& gb = *lim.box;
-  s += fmt::format(
-      "fix guard all brash/guard every {} box {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} zmax {:.9g} "
-      "ke_max {:.6g} youngs {:g} poisson {:g} max_dt_fraction {:g}",
-      c.guards.every_steps, gb[0], gb[1], gb[2], gb[3], gb[4], gb[5], *lim.z_max_m, *lim.ke_max_J,
-      c.contact.youngs_modulus_pa, c.contact.poisson_ratio, kMaxTimestepOverRayleigh);
+  s += guard_command(c, lim);
   if (lim.max_hull_penetration_d && !opt.guard_hull_file.empty())
     s += fmt::format(" hull {} {:.9g} 0 {:.9g} {:.9g} 0 0 max_penetration {:g}", opt.guard_hull_file, hull_x0,
                      -c.hull.draft_m, c.ship.speed_m_s, *lim.max_hull_penetration_d);
@@ -234,11 +245,7 @@ std::string settle_script(const Case& c, const Box& box, long chunk_steps, long 
   s += material_lines(c, false);
   s += "pair_style gran model hertz tangential history\npair_coeff * *\n";
   s += fmt::format("timestep {:.9g}\n", c.run.timestep_s);
-  // closed: side walls and end walls (the bed must not spread through open ends while it settles)
-  const char* wall = "wall/gran model hertz tangential history primitive type 3";
-  s += fmt::format("fix sides all {0} yplane {1:.9g}\nfix sides2 all {0} yplane {2:.9g}\n", wall,
-                   -0.5 * c.channel.width_m, 0.5 * c.channel.width_m);
-  s += fmt::format("fix end0 all {0} xplane 0\nfix end1 all {0} xplane {1:.9g}\n", wall, c.channel.length_m);
+  s += wall_lines(c, false, true);  // closed: the bed must not spread through open ends while it settles
   s += "fix integr all nve/sphere\n";
   s += fmt::format("fix grav all gravity {:.9g} vector 0 0 -1\n", c.water.gravity_m_s2);
   // Preparation only: a floating bed bobs for seconds (the fluid model's drag, quadratic in the speed, barely
@@ -246,13 +253,7 @@ std::string settle_script(const Case& c, const Box& box, long chunk_steps, long 
   // the mean piece; the run itself starts from the settled positions at rest, without it.
   const double mean_mass_kg = c.ice.density_kg_m3 * sphere_volume_m3(c.ice.diameter_mean_m);
   s += fmt::format("fix damp all viscous {:.9g}\n", mean_mass_kg / 0.1);
-  const auto lim = guard::limits_for_case(c, {box.xlo, box.xhi, box.ylo, box.yhi, box.zlo, box.zhi});
-  const auto& gb = *lim.box;
-  s += fmt::format(
-      "fix guard all brash/guard every {} box {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} zmax {:.9g} ke_max {:.6g} "
-      "youngs {:g} poisson {:g} max_dt_fraction {:g}\n",
-      c.guards.every_steps, gb[0], gb[1], gb[2], gb[3], gb[4], gb[5], *lim.z_max_m, *lim.ke_max_J,
-      c.contact.youngs_modulus_pa, c.contact.poisson_ratio, kMaxTimestepOverRayleigh);
+  s += guard_command(c, guard::limits_for_case(c, {box.xlo, box.xhi, box.ylo, box.yhi, box.zlo, box.zhi})) + "\n";
   s += fmt::format("fix fl all icefluid {} output_every {}\n", icefluid_arguments(brash::fluid_params(c)),
                    chunk_steps * max_chunks + 1);
   // the rms speed of the pieces from their translational kinetic energy (thermo evaluates c_k at each chunk's
