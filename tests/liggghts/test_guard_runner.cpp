@@ -31,6 +31,13 @@ void write_small_case(const fs::path& case_dir, const std::string& duration, con
                                                  .extra = extra});
 }
 
+// Rewrites case_dir/case.yaml with `pattern` replaced (ECMAScript regex, $1 for a group); the pattern must match.
+void edit_case(const fs::path& case_dir, const std::string& pattern, const std::string& replacement) {
+  const std::string yaml = brash::test::read_text(case_dir / "case.yaml");
+  ASSERT_TRUE(std::regex_search(yaml, std::regex(pattern))) << pattern << " not in\n" << yaml;
+  std::ofstream(case_dir / "case.yaml") << std::regex_replace(yaml, std::regex(pattern), replacement);
+}
+
 int run_case(const fs::path& dir) {
   return brash::test::run_runner(dir / "case", dir / "run", dir / "run.log");
 }
@@ -82,10 +89,7 @@ TEST(LiggghtsGuardRunner, HullPenetrationStopsTheRunWithAClearMessage) {
 TEST(LiggghtsGuardRunner, SoftIceBelowFiveMegapascalRuns) {
   const fs::path dir = brash::test::fresh_dir("soft_ice");
   write_small_case(dir / "case", "0.02", "");
-  std::string yaml = brash::test::read_text(dir / "case/case.yaml");
-  yaml =
-      std::regex_replace(yaml, std::regex("\n  youngs_modulus_pa:[^\n]*"), "\n  youngs_modulus_pa: 1.25e6");
-  std::ofstream(dir / "case/case.yaml") << yaml;
+  edit_case(dir / "case", "\n  youngs_modulus_pa:[^\n]*", "\n  youngs_modulus_pa: 1.25e6");
   EXPECT_EQ(run_case(dir), 0) << brash::test::read_text(dir / "run.log");
   EXPECT_NE(brash::test::read_text(dir / "run/in.lmp").find("\nsoft_particles yes\n"), std::string::npos);
   EXPECT_NE(brash::test::read_text(dir / "run/meta.json").find("\"complete\""), std::string::npos);
@@ -97,12 +101,11 @@ TEST(LiggghtsGuardRunner, SoftIceBelowFiveMegapascalRuns) {
 TEST(LiggghtsGuardRunner, WalledChannelEndsAreInTheSceneAndTheHullPassesThem) {
   const fs::path dir = brash::test::fresh_dir("walled_ends");
   write_small_case(dir / "case", "0.3", "");
-  std::string yaml = brash::test::read_text(dir / "case/case.yaml");
+  const std::string yaml = brash::test::read_text(dir / "case/case.yaml");
   std::smatch m;
   ASSERT_TRUE(std::regex_search(yaml, m, std::regex("\n  length_m: ([^ \n]*)"))) << yaml;
   const std::string length_m = m[1].str();
-  yaml = std::regex_replace(yaml, std::regex("\n  width_m:([^\n]*)"), "\n  width_m:$1\n  ends: walls");
-  std::ofstream(dir / "case/case.yaml") << yaml;
+  edit_case(dir / "case", "\n  width_m:([^\n]*)", "\n  width_m:$1\n  ends: walls");
   EXPECT_EQ(run_case(dir), 0) << brash::test::read_text(dir / "run.log");
   const std::string in = brash::test::read_text(dir / "run/in.lmp");
   EXPECT_NE(in.find("primitive type 3 xplane 0\n"), std::string::npos) << in;
@@ -121,9 +124,7 @@ TEST(LiggghtsGuardRunner, WalledChannelEndsAreInTheSceneAndTheHullPassesThem) {
 TEST(LiggghtsGuardRunner, SettledBedIsMadeOnceCachedAndStartedFrom) {
   const fs::path dir = brash::test::fresh_dir("settled_bed");
   write_small_case(dir / "case", "0.05", "");
-  std::string yaml = brash::test::read_text(dir / "case/case.yaml");
-  yaml = std::regex_replace(yaml, std::regex("\nice:"), "\nice:\n  settle: true");
-  std::ofstream(dir / "case/case.yaml") << yaml;
+  edit_case(dir / "case", "\nice:", "\nice:\n  settle: true");
   EXPECT_EQ(run_case(dir), 0) << brash::test::read_text(dir / "run.log");
   std::vector<fs::path> settled;
   for (const auto& e : fs::directory_iterator(dir / "case/generated"))
@@ -162,10 +163,7 @@ TEST(LiggghtsGuardRunner, SettledBedIsMadeOnceCachedAndStartedFrom) {
 TEST(LiggghtsGuardRunner, HullFlowCaseRunsWithModelDragAndIsRefusedWithAddedMass) {
   const fs::path dir = brash::test::fresh_dir("hull_flow_runner");
   write_small_case(dir / "case", "0.1", "");
-  std::string yaml = brash::test::read_text(dir / "case/case.yaml");
-  yaml = std::regex_replace(yaml, std::regex("\n  ca_table: table1"),
-                            "\n  ca_table: table1\n  hull_flow: thin_ship");
-  std::ofstream(dir / "case/case.yaml") << yaml;
+  edit_case(dir / "case", "\n  ca_table: table1", "\n  ca_table: table1\n  hull_flow: thin_ship");
   const std::string cmd = brash::test::runner_command(dir / "case", dir / "run");
   // the case's model (both) takes the flow; --model added_mass has no drag for it and is refused
   ASSERT_NE(std::system((cmd + " --model added_mass > '" + (dir / "refused.log").string() + "' 2>&1").c_str()), 0);
