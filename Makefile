@@ -13,7 +13,7 @@ DEB_PACKAGES := g++ make cmake ninja-build pkg-config \
   clang libclang-rt-14-dev \
   yade pybind11-dev python3-dev
 
-.PHONY: deps build test run bench study install clean
+.PHONY: deps build test run bench study validation reference install clean
 
 deps:
 	@missing=""; for p in $(DEB_PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
@@ -39,12 +39,21 @@ run: build
 bench: build
 	./scripts/brash-bench
 
-# The study of issue 11 -> docs/study.md, run by brash-study from the study file study/$(STUDY).yaml (full: paper
-# case + sweeps, days; short: sweeps on jbc_bench, ~1 h; smoke: 3 tiny runs). STUDY_DOC / STUDY_WORK redirect the
-# document and the work dir; STUDY_PAPER=1, STUDY_ENSEMBLES=1, STUDY_YADE=1 add the paper runs, the ensembles, YADE.
+# A study, run by brash-study from the study file study/$(STUDY).yaml (full: paper case + sweeps, days; short:
+# sweeps on jbc_bench, ~1 h; smoke: 3 tiny runs) -> runs/study-$(STUDY)/study.md. STUDY_DOC / STUDY_WORK redirect
+# the document and the work dir; STUDY_PAPER=1, STUDY_ENSEMBLES=1, STUDY_YADE=1 add the paper runs, the ensembles,
+# YADE; complete paper runs and ensemble summaries are archived in evidence/.
 STUDY ?= full
 study: build
 	$(BUILD_DIR)/bin/brash-study --study study/$(STUDY).yaml
+
+# The validation page, generated from the curated report files in evidence/ (evidence/README.md).
+validation: build
+	BRASH_BIN=$(abspath $(BUILD_DIR))/bin ./scripts/brash-validation
+
+# The reference page: every command's --help and every LIGGGHTS fix's syntax (scripts/brash-reference).
+reference: build
+	BRASH_BIN=$(abspath $(BUILD_DIR))/bin ./scripts/brash-reference
 
 # The tools, the core library (find_package(brash): brash::core), the cases, hull data, study files and doc pages
 # into $(PREFIX) (README.md "Install"); the installed tree finds its data relative to its bin/ folder.

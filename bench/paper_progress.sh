@@ -39,17 +39,17 @@ for d in "$runs"/paper-*/; do
   fi | bin_rows > "$tmp/$name"
   cols+=("$name")
 done
-# The runs that live on elsewhere: archived by brash-study (docs/paper_runs/<name>/hull_force.csv, unless the run
+# The runs that live on elsewhere: archived by brash-study (evidence/<name>/hull_force.csv, unless the run
 # directory is here) and the 40 s paper runs whose directories were lost, kept as their histories
-# (docs/paper_runs/paper_histories_40s.dat: 0.5 s bins of the full-scale resistance in kN, back to model scale N;
+# (evidence/paper_histories_40s.dat: 0.5 s bins of the full-scale resistance in kN, back to model scale N;
 # only when BIN_S is a multiple of 0.5 s).
-for d in "$here"/docs/paper_runs/paper-*/; do
+for d in "$here"/evidence/paper-*/; do
   d="${d%/}"; name="$(basename "$d")"
   [ -f "$d/hull_force.csv" ] && [ ! -e "$runs/$name" ] || continue
   csv_rows "$d/hull_force.csv" | bin_rows > "$tmp/$name (archived)"
   cols+=("$name (archived)")
 done
-hist="$here/docs/paper_runs/paper_histories_40s.dat"
+hist="$here/evidence/paper_histories_40s.dat"
 per=$(awk -v b="$bin_s" 'BEGIN { m = b / 0.5; print (m >= 1 && m == int(m)) ? m : 0 }')
 if [ -f "$hist" ] && [ "$per" -gt 0 ]; then
   lambda=$("$bin/brash-case" get "$here/cases/jbc_ia_5kn" ship.scale_lambda)

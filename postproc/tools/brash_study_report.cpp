@@ -1,5 +1,6 @@
-// brash-study-report: the study document (docs/study.md) generated from a study manifest and the
-// report.json of every run it lists (issue 11). Nothing in the document is typed by hand: every number
+// brash-study-report: a study document generated from a study manifest and the report.json of every run it
+// lists: a study's own (brash-study, <work>/study.md) or the project's validation page (`make validation`:
+// evidence/manifest.tsv -> docs/validation.md). Nothing in the document is typed by hand: every number
 // comes from a report.json and every run is listed with the command that produced it. The manifest's format
 // is described in brash/post/study_report/study.hpp; the document is made by the library brash_study_report,
 // its prose read from a text template (--template; postproc/study_report/templates/study.md.tmpl).
@@ -31,8 +32,8 @@ void write_atomically(const fs::path& path, const std::string& text) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"brash-study-report: docs/study.md from a study manifest and the report.json of its runs"};
-  std::string manifest, out = "docs/study.md", plot, figures, summary_path, title = "brash study", study_command;
+  CLI::App app{"brash-study-report: a study document from a study manifest and the report.json of its runs"};
+  std::string manifest, out = "study.md", plot, figures, summary_path, title = "brash study", study_command;
   app.add_option("manifest", manifest, "study manifest (tab-separated, see the file header)")->required();
   app.add_option("--out", out, "markdown output")->capture_default_str();
   app.add_option("--plot", plot, "speed-sweep PNG (default: <out stem>_speed.png next to --out; 'none' = no plot)");

@@ -45,8 +45,8 @@ std::string duration_of(const fs::path& run_dir) {
 std::string in_progress_text(const PlannedPaperRun& p, const fs::path& listed, bool busy) {
   const double t = model_time_reached(listed);
   if (listed != p.out)
-    return fmt::format("in progress, stopped: model time {:.2f} s of {} s reached on the machine that ran it (its "
-                       "record so far is archived; its restart files stayed there): STUDY=full starts it again",
+    return fmt::format("in progress, stopped: model time {:.2f} s of {} s reached (its record so far is kept here; the "
+                       "run resumes from its own restart files): STUDY=full starts it again",
                        t, duration_of(listed));
   const std::time_t now = std::time(nullptr);
   return fmt::format("in progress: model time {:.2f} s of {} s reached ({:%Y-%m-%dT%H:%MZ}); {}", t,

@@ -2,7 +2,8 @@
 //   brash-study --study study/short.yaml [--out DOC] [--work DIR]      (`STUDY=short make study`)
 // Every run is its own run directory <work>/runs/<id>; a run whose report.json is complete and that was made by the
 // same command is not re-run (the study resumes where it stopped). The paper runs (days) live in the paper dir and
-// are archived in docs/paper_runs; the study's own runs are copied beside the document (<doc stem>_runs/<id>); the
+// are archived in evidence/ (the repository's curated report files, read by `make validation`); the study's own
+// runs are copied beside the document (<work>/study.md by default: <doc stem>_runs/<id>); the
 // manifest <work>/manifest.tsv (copy: <doc stem>_manifest.tsv) lists every row with its command. Format of a study
 // file: study/README.md.
 #include <CLI/CLI.hpp>
@@ -64,8 +65,8 @@ Settings settings_of(const Options& o, const Study& study) {
   s.bin = o.bin.empty() ? own_bin_dir() : absolute(o.bin);
   s.work = absolute(o.work.empty() ? (s.repo / "runs" / ("study-" + study.name)).string() : o.work);
   s.paper_dir = absolute(o.paper_dir.empty() ? (s.repo / "runs").string() : o.paper_dir);
-  s.archive_dir = absolute(o.archive_dir.empty() ? (s.repo / "docs/paper_runs").string() : o.archive_dir);
-  s.doc = absolute(o.doc.empty() ? (s.repo / "docs/study.md").string() : o.doc);
+  s.archive_dir = absolute(o.archive_dir.empty() ? (s.repo / "evidence").string() : o.archive_dir);
+  s.doc = absolute(o.doc.empty() ? (s.work / "study.md").string() : o.doc);
   s.ranks = o.ranks;
   s.nice = o.nice;
   s.run_paper = study.run_paper || o.run_paper;
@@ -88,12 +89,12 @@ int main(int argc, char** argv) {
   Options o;
   app.add_option("--study", o.study, "study file (default: <data>/study/$STUDY.yaml, STUDY=full; data = "
                                      "<prefix>/share/brash or $BRASH_DATA_DIR)");
-  app.add_option("--out", o.doc, "the document (default docs/study.md)")->envname("STUDY_DOC");
+  app.add_option("--out", o.doc, "the document (default <work>/study.md)")->envname("STUDY_DOC");
   app.add_option("--work", o.work, "work dir: cases, runs, logs, manifest (default runs/study-<name>)")->envname("STUDY_WORK");
   app.add_option("--paper-dir", o.paper_dir, "where the paper runs, shared cases and ensembles live (default runs)")
       ->envname("STUDY_PAPER_DIR");
   app.add_option("--archive", o.archive_dir, "archive of complete paper runs and ensemble summaries (default "
-                                             "docs/paper_runs)")->envname("STUDY_ARCHIVE");
+                                             "evidence)")->envname("STUDY_ARCHIVE");
   app.add_option("--bin", o.bin, "the executables (default: this program's folder)")->envname("BRASH_BIN");
   app.add_option("--repo", o.repo, "the repository (the study file's paths are relative to it; default: the folder "
                                    "above the study file's folder)");

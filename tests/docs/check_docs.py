@@ -16,7 +16,8 @@ Pages: every *.md under ROOT (not build*/, runs/, hidden folders, tests/docs/fix
       (--job-name=brash-x) or a log prefix ([brash-x]) is not a command;
   (c) no reference outside the repository (../shared, a link or path that leaves ROOT), no `git show`
       citation, no work-period label (session N, "(session", "this session", "sessions", issue N [item M])
-      and no machine-history phrase ("lost with", "the old machine", "since replaced").
+      and no machine-history phrase ("lost with", "the old machine", "since replaced", "on a quiet machine"), no
+      date (YYYY-MM-DD: when a result was found is history, not a fact about the project).
 Prints each offence as FILE:LINE: problem.
 """
 import os
@@ -46,6 +47,9 @@ FORBIDDEN = [
     (re.compile(r"\blost with\b", re.I), "machine-history phrase (lost with)"),
     (re.compile(r"\b(the\s+)?old machine\b", re.I), "machine-history phrase (the old machine)"),
     (re.compile(r"\bmachine since replaced\b|\bsince replaced\b", re.I), "machine-history phrase (since replaced)"),
+    (re.compile(r"\b20\d\d-[01]\d-[0-3]\d\b"), "date label (a page states what is true now; when it was found is history)"),
+    (re.compile(r"\bon a quiet machine\b|\bthe shared 2-core host\b|\bthis (loaded )?host\b", re.I),
+     "machine-history phrase (which machine, when)"),
 ]
 
 

@@ -59,7 +59,7 @@ cmp "$tmp/paper/paper-liggghts-drag-20s/report.json" "$tmp/archive/paper-liggght
 rm -rf "$tmp/paper/paper-liggghts-drag-20s"
 study
 expect '/archive/paper-liggghts-drag-20s` | smoke_base | liggghts | drag |' \
-  '/paper/paper-liggghts-drag-20s`, on the machine that ran it.'
+  '/paper/paper-liggghts-drag-20s`, where the run was made.'
 test ! -e "$tmp/paper/paper-liggghts-drag-20s"
 # a paired ensemble's summary: listed, archived, and listed from the archive once its folder is gone
 qs="1:contact.youngs_modulus_pa=3.125e5,run.timestep_s=8.0e-4"

@@ -18,8 +18,8 @@ struct Settings {
   std::filesystem::path bin;          // the executables (build/bin)
   std::filesystem::path work;         // <work>/cases, <work>/runs/<id>, <work>/logs, <work>/manifest.tsv
   std::filesystem::path paper_dir;    // the paper runs, the shared cases (<paper dir>/cases), the ensembles
-  std::filesystem::path archive_dir;  // complete paper runs and ensemble summaries (docs/paper_runs)
-  std::filesystem::path doc;          // the document (docs/study.md)
+  std::filesystem::path archive_dir;  // complete paper runs and ensemble summaries (evidence/)
+  std::filesystem::path doc;          // the document (<work>/study.md by default)
   int ranks = 2;
   int nice = 5;
   std::vector<Engine> engines;  // engines whose variants run

@@ -1,6 +1,6 @@
 // A run directory as the study sees it: complete or not, how far its force record reached, and the copies of its
 // small outputs (report, force history, case, meta; not the dumps and restarts) that keep it listed once the
-// directory is gone (the paper runs' archive in docs/paper_runs, the study's runs beside the document).
+// directory is gone (the paper runs' archive in evidence/, the study's runs beside the document).
 #pragma once
 #include <filesystem>
 #include <string>

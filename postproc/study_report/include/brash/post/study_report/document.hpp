@@ -1,4 +1,4 @@
-// The whole study document (docs/study.md) and its machine-readable summary, from a loaded study.
+// The whole study document (a study.md, docs/validation.md) and its machine-readable summary, from a loaded study.
 #pragma once
 #include <filesystem>
 #include <optional>

@@ -1,4 +1,4 @@
-// The sections of the study document (docs/study.md), in document order; each renders its markdown from the
+// The sections of the study document (a study.md, docs/validation.md), in document order; each renders its markdown from the
 // loaded study (study.hpp) and what analysis.hpp derives from it, its prose from the text template
 // (text_template.hpp: templates/study.md.tmpl).
 #pragma once

@@ -1,4 +1,4 @@
-// The loaded study behind docs/study.md (brash-study-report, issue 11): the manifest's rows, one Run per run
+// The loaded study behind a study document (brash-study-report): the manifest's rows, one Run per run
 // directory (its report.json and meta.json; for the runs of groups `paper` and `engine` also its resolved
 // case.yaml and its force record), the paired-seed ensembles' summaries and the paper case's published values.
 // Loading only: nothing here compares or interprets a number (analysis.hpp does).
