@@ -166,3 +166,23 @@ TEST_F(OdeGuard, HullFlowRunsWithDragAndIsRefusedWithAddedMass) {
   EXPECT_NE(am.err.find("fluid.hull_flow"), std::string::npos) << am.err;
   EXPECT_NE(am.err.find("added_mass"), std::string::npos) << am.err;
 }
+
+// Keys only LIGGGHTS carries out are refused by name before any output, not run as the whole channel with
+// every piece awake: the settled bed, the half channel and the idle far field.
+TEST_F(OdeGuard, KeysOnlyLiggghtsCarriesOutAreRefusedByName) {
+  const struct {
+    const char* name;
+    const char* from;
+    const char* to;
+    const char* key;
+  } cases[] = {{"settle", "\nice:\n", "\nice:\n  settle: true\n", "ice.settle: true"},
+               {"symmetry", "\nrun:\n", "\nspeedups:\n  symmetry_y: true\nrun:\n", "speedups.symmetry_y: true"},
+               {"farfield", "\nrun:\n", "\nspeedups:\n  farfield: true\nrun:\n", "speedups.farfield: true"}};
+  for (const auto& c : cases) {
+    const auto r = run(make_case(std::string("refused_") + c.name, c.from, c.to, ""), "0.1");
+    EXPECT_EQ(r.exit_code, 2) << c.name << ": " << r.err;
+    EXPECT_NE(r.err.find(c.key), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("brash-liggghts-run"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(r.run / "meta.json")) << c.name;  // refused before any output
+  }
+}

@@ -158,6 +158,20 @@ std::string options_problem(const DriverOptions& o) {
   return {};
 }
 
+// Case keys that only some engines carry out: refused by name on the others, before any output.
+void refuse_what_the_engine_cannot_run(const Case& c, const fs::path& case_file, const Engine& engine) {
+  const auto refuse = [&](const std::string& key, const std::string& what, const std::string& instead) {
+    throw InputError(fmt::format("{}: {}: true: {} is made on LIGGGHTS (brash-liggghts-run); {} {}", case_file.string(),
+                                 key, what, engine.runner(), instead));
+  };
+  if (c.ice.settle && !engine.starts_from_settled_bed())
+    refuse("ice.settle", "the settled bed", "starts from the packing (ice.settle: false)");
+  if (c.speedups.symmetry_y && !engine.runs_half_channel())
+    refuse("speedups.symmetry_y", "the half channel", "runs the whole channel (speedups.symmetry_y: false)");
+  if (c.speedups.farfield && !engine.idles_far_field())
+    refuse("speedups.farfield", "the idle far field", "integrates every piece (speedups.farfield: false)");
+}
+
 }  // namespace
 
 int drive(Engine& engine, const DriverOptions& o) {
@@ -174,10 +188,7 @@ int drive(Engine& engine, const DriverOptions& o) {
     const fs::path case_file = case_file_of(o);
     const Case c = load_run_case(o, tag);
     prepare_case_inputs(c, case_file, tag);
-    if (c.ice.settle && !engine.starts_from_settled_bed())
-      throw InputError(fmt::format("{}: ice.settle: true: the settled bed is made and measured on LIGGGHTS "
-                                   "(brash-liggghts-run); {} starts from the packing (ice.settle: false)",
-                                   case_file.string(), engine.runner()));
+    refuse_what_the_engine_cannot_run(c, case_file, engine);
     Case start = c;  // the packing, or its settled bed (ice.settle, brash/settle.hpp)
     start.ice.packing_file = starting_packing(c, tag);
     const auto spheres = read_case_packing(  // checked against the case before any output

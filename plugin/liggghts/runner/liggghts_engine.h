@@ -21,6 +21,8 @@ class LiggghtsEngine final : public run::Engine {
   std::string name() const override { return "liggghts"; }
   std::string runner() const override { return "brash-liggghts-run"; }
   bool starts_from_settled_bed() const override { return true; }
+  bool runs_half_channel() const override { return true; }
+  bool idles_far_field() const override { return true; }
   nlohmann::json meta() const override;
   void load(const Case& c, const std::filesystem::path& case_file, const std::vector<Sphere>& spheres) override;
   void write_scene(const std::filesystem::path& run_dir, bool resume) override;

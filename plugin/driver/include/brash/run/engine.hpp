@@ -56,6 +56,11 @@ class Engine {
   // Whether a run may start from the settled bed (ice.settle): it is made with LIGGGHTS' soft contacts, whose
   // equilibrium overlaps a rigid-contact engine would push apart.
   virtual bool starts_from_settled_bed() const { return false; }
+  // Whether the engine runs the half channel of speedups.symmetry_y and idles the far field of speedups.farfield
+  // itself. An engine that does not has the key refused by name: it would run the whole channel, every piece
+  // awake, while the case says otherwise.
+  virtual bool runs_half_channel() const { return false; }
+  virtual bool idles_far_field() const { return false; }
 
   // Checks the case against what this engine can run and reads what the scene needs (hull, packing), before
   // any output is written. Throws InputError naming the case file.
