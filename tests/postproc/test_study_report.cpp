@@ -352,8 +352,9 @@ TEST(StudyReport, PairedEnsemblesAreTabledAndAMissingOneIsNamed) {
 }
 
 // Section (a)'s figures: the Fig. 6 analog bar chart (data with our runs, the paper's numbers and our R_CH) and
-// each run's own force history / newest ice views copied next to the document; the folder is replaced each time.
-TEST(StudyReport, FiguresOfThePaperSectionAreCopiedAndPlotted) {
+// each run's own force history / newest ice views linked where they are (not copied); the figure folder is
+// replaced each time.
+TEST(StudyReport, FiguresOfThePaperSectionAreLinkedAndPlotted) {
   const fs::path d = fresh_dir("figs");
   write_report(d / "runs/am", "liggghts", "added_mass", 0.482, 12.5, 1.5);
   write_report(d / "runs/ode", "ode", "drag", 0.482, 11.0, 1.0);
@@ -372,9 +373,8 @@ TEST(StudyReport, FiguresOfThePaperSectionAreCopiedAndPlotted) {
       << read(d / "tool.log");
   const fs::path figs = d / "doc/study_figs";
   EXPECT_FALSE(fs::exists(figs / "R9_stale.png"));
-  EXPECT_EQ(read(figs / "R1_force_history.png"), "force history of am");
-  EXPECT_EQ(read(figs / "R1_ice_views.png"), "late views");  // the newest dump's views
-  EXPECT_FALSE(fs::exists(figs / "R2_force_history.png"));  // the ODE run has none: said so in the text
+  EXPECT_FALSE(fs::exists(figs / "R1_force_history.png"));  // linked, not copied
+  EXPECT_FALSE(fs::exists(figs / "R1_ice_views.png"));
   const std::string dat = read(figs / "paper_bars.dat");
   EXPECT_NE(dat.find("\"R1 liggghts added_mass\" " + fmt::format("{}", 12.5 * std::pow(28.5, 3) * 1.025 / 1000.0)),
             std::string::npos)
@@ -386,9 +386,9 @@ TEST(StudyReport, FiguresOfThePaperSectionAreCopiedAndPlotted) {
   EXPECT_NE(dat.find("\"paper FSICR R_CH\" 999 0"), std::string::npos);
   EXPECT_NE(read(figs / "paper_bars.gp").find("REDUCED-CASE runs, not the paper case"), std::string::npos);
   const std::string md = read(d / "doc/study.md");
-  EXPECT_NE(md.find("![R1 force history](study_figs/R1_force_history.png)"), std::string::npos) << md;
-  EXPECT_NE(md.find("![R1 ice views](study_figs/R1_ice_views.png)"), std::string::npos);
-  EXPECT_NE(md.find("no force_history.png in"), std::string::npos);
+  EXPECT_NE(md.find("![R1 force history](../runs/am/force_history.png)"), std::string::npos) << md;
+  EXPECT_NE(md.find("![R1 ice views](../runs/am/ice_views_001.00s.png)"), std::string::npos);  // the newest dump's
+  EXPECT_NE(md.find("no force_history.png in"), std::string::npos);  // the ODE run has none: said so in the text
   if (std::system("command -v gnuplot > /dev/null 2>&1") == 0) {
     EXPECT_TRUE(fs::exists(figs / "paper_bars.png"));
     EXPECT_NE(md.find("![full-scale resistance vs the paper](study_figs/paper_bars.png)"), std::string::npos);
@@ -444,9 +444,9 @@ TEST(StudyReport, ACopyFindsItsFullRunDirectoryFromAnyWorkingDirectory) {
                                     (d / "doc/study.md").string())),
             0)
       << read(d / "tool.log");
-  EXPECT_EQ(read(d / "doc/study_figs/R1_force_history.png"), "force history of am");
-  EXPECT_EQ(read(d / "doc/study_figs/R1_ice_views.png"), "views of am");
   const std::string md = read(d / "doc/study.md");
+  EXPECT_NE(md.find("![R1 force history](../work/runs/am/force_history.png)"), std::string::npos) << md;
+  EXPECT_NE(md.find("![R1 ice views](../work/runs/am/ice_views_001.00s.png)"), std::string::npos) << md;
   EXPECT_NE(md.find("work/runs/am/particles.pvd` and `"), std::string::npos) << md;
   EXPECT_EQ(md.find("no force_history.png in"), std::string::npos) << md;
 }

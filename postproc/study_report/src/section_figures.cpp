@@ -19,9 +19,15 @@ namespace {
 
 struct Link {  // a file of the figure folder as the document links it
   std::string fig_dir_from_doc;
+  fs::path doc_dir;  // absolute
   std::string operator()(const fs::path& file) const {
     const std::string f = file.filename().string();
     return fig_dir_from_doc.empty() || fig_dir_from_doc == "." ? f : fig_dir_from_doc + "/" + f;
+  }
+  // Any other file (a run's own plot), relative to the document as the paths name it (links are not resolved:
+  // a page and the folders beside it may be reached through one).
+  std::string to(const fs::path& file) const {
+    return fs::absolute(file).lexically_normal().lexically_relative(doc_dir).generic_string();
   }
 };
 
@@ -84,9 +90,9 @@ std::string paraview_note(const Run& r, const fs::path& full_dir, const TextTemp
              : " " + text.fill("figures.paraview_elsewhere", {{"run_dir", show_path(full_dir)}});
 }
 
-// Fig. 5 and 4 analogs of one run: its own plots, copied into the figure folder; views for the first run of
-// each engine (ENGINES_WITH_VIEWS) and for every paper-case run (the study's headline runs).
-std::string run_figures(const Run& r, const TextTemplate& text, const fs::path& fig_dir, const Link& link,
+// Fig. 5 and 4 analogs of one run: its own plots, linked where they are (a copy would double the repository's
+// figures); views for the first run of each engine (ENGINES_WITH_VIEWS) and for every paper-case run.
+std::string run_figures(const Run& r, const TextTemplate& text, const Link& link,
                         std::set<std::string>& engines_with_views) {
   std::string md = fmt::format("**{}** ({} {}, {}):", r.ref, r.engine, r.model, scale_label(r));
   // the plots are in the run directory, or (a copy without its plots, brash-study's study_runs) in the full run
@@ -95,9 +101,7 @@ std::string run_figures(const Run& r, const TextTemplate& text, const fs::path& 
   const fs::path plot_dir = fs::exists(r.run_dir / "force_history.png") || full_dir.empty() ? r.run_dir : full_dir;
   const fs::path fh = plot_dir / "force_history.png";
   if (fs::exists(fh)) {
-    const fs::path copy = fig_dir / (r.ref + "_force_history.png");
-    fs::copy_file(fh, copy, fs::copy_options::overwrite_existing);
-    md += fmt::format("\n\n![{} force history]({})\n\n{}", r.ref, link(copy),
+    md += fmt::format("\n\n![{} force history]({})\n\n{}", r.ref, link.to(fh),
                       text.fill("figures.force_history_caption", {{"source", show_path(fh)}}));
   } else {
     md += " " + text.fill("figures.no_force_history", {{"run_dir", show_path(r.run_dir)}});
@@ -106,9 +110,7 @@ std::string run_figures(const Run& r, const TextTemplate& text, const fs::path& 
   const fs::path views = want_views ? latest_ice_views(plot_dir) : fs::path();
   if (!views.empty()) {
     engines_with_views.insert(r.engine);
-    const fs::path copy = fig_dir / (r.ref + "_ice_views.png");
-    fs::copy_file(views, copy, fs::copy_options::overwrite_existing);
-    md += fmt::format("\n\n![{} ice views]({})\n\n{}", r.ref, link(copy),
+    md += fmt::format("\n\n![{} ice views]({})\n\n{}", r.ref, link.to(views),
                       text.fill("figures.ice_views_caption", {{"source", show_path(views)}}));
   }
   return md + paraview_note(r, full_dir, text) + "\n\n";
@@ -124,12 +126,12 @@ std::string section_figures(const Study& s, const TextTemplate& text, const fs::
   std::error_code ec;
   fs::remove_all(fig_dir, ec);
   fs::create_directories(fig_dir);
-  const Link link{
-      fs::relative(fs::absolute(fig_dir), fs::absolute(doc_dir.empty() ? fs::path(".") : doc_dir), ec).string()};
+  const fs::path doc_abs = fs::absolute(doc_dir.empty() ? fs::path(".") : doc_dir).lexically_normal();
+  const Link link{fs::relative(fs::absolute(fig_dir), doc_abs, ec).string(), doc_abs};
   md += bars_figure(s, text, runs, fig_dir, link);
   md += histories_figure(s, text, fig_dir, link);
   std::set<std::string> engines_with_views;
-  for (const Run* r : runs) md += run_figures(*r, text, fig_dir, link, engines_with_views);
+  for (const Run* r : runs) md += run_figures(*r, text, link, engines_with_views);
   return md;
 }
 
