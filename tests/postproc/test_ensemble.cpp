@@ -110,7 +110,7 @@ TEST(PairedEnsemble, HandComputedTableAndSummary) {
   EXPECT_NEAR(s["speedup"].get<double>(), 330.0 / 180.0, 1e-15);
 }
 
-// The summary has the archived summaries' fields in their order (docs/paper_runs/ensembles: read by
+// The summary has the archived summaries' fields in their order (evidence/ensembles: read by
 // brash-study-report for its `paired` rows).
 TEST(PairedEnsemble, SummaryHasTheArchivedFields) {
   const auto d = fresh_dir("fields");
@@ -121,7 +121,7 @@ TEST(PairedEnsemble, SummaryHasTheArchivedFields) {
   const auto ours = nlohmann::ordered_json::parse(read(d / "ensemble-np1-vs-np2-dt.json"));
   std::vector<std::string> keys;
   for (const auto& [k, v] : ours.items()) keys.push_back(k);
-  const fs::path archive = fs::path(BRASH_SOURCE_DIR) / "docs/paper_runs/ensembles/fluid-reading";
+  const fs::path archive = fs::path(BRASH_SOURCE_DIR) / "evidence/ensembles/fluid-reading";
   ASSERT_TRUE(fs::is_directory(archive));
   int compared = 0;
   for (const auto& e : fs::directory_iterator(archive)) {

@@ -128,12 +128,12 @@ TEST(RunDir, PublishedReferencesComeFromTheCase) {
   fs::remove_all(dir);
 }
 
-// The paper case's archived both run (docs/paper_runs), post-processed again: its case declares the paper's
+// The paper case's archived both run (evidence/), post-processed again: its case declares the paper's
 // values, so the report compares with them (393 kN for both, R_CH 999 kN, the stated ratio 2.54).
 TEST(RunDir, PaperCaseArchiveComparesWithThePapersDeclaredValues) {
   const auto dir = scratch("paper_archive");
   fs::remove_all(dir);
-  fs::copy(fs::path(BRASH_SOURCE_DIR) / "docs/paper_runs/paper-liggghts-both-20s", dir, fs::copy_options::recursive);
+  fs::copy(fs::path(BRASH_SOURCE_DIR) / "evidence/paper-liggghts-both-20s", dir, fs::copy_options::recursive);
   const auto cmd = fmt::format("{} {} --no-plots --no-paraview > {} 2>&1", BRASH_POST_EXE, dir.string(),
                                (dir / "cli.log").string());
   ASSERT_EQ(std::system(cmd.c_str()), 0) << brash::post::read_text_file(dir / "cli.log");

@@ -42,8 +42,8 @@ Settings settings() {
   s.bin = "/repo/build/bin";
   s.work = "/scratch/work";
   s.paper_dir = "/repo/runs";
-  s.archive_dir = "/repo/docs/paper_runs";
-  s.doc = "/repo/docs/study.md";
+  s.archive_dir = "/repo/evidence";
+  s.doc = "/repo/runs/study-short/study.md";
   s.ranks = 2;
   s.nice = 5;
   s.engines = {Engine::Liggghts, Engine::Ode};
