@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Where the ice is along the hull, per particle dump of a LIGGGHTS run (finished or still going): what the
-resistance history does not say by itself (issue 11: "where we differ, say why, backed by a run").
+resistance history does not say by itself (where we differ from the paper, and why).
     /usr/bin/python3 bench/ice_along_hull.py RUN_DIR [EVERY (2: every second dump)]
 Per dump (LIGGGHTS raw dumps while the run goes, the particles_*.csv of any engine when it is done), with the hull's x range from the case (bow at start_x + Lpp + speed t, Lpp long) and its beam B:
   - ahead: the ice within 1 m ahead of the bow, in pieces per m2 over the undisturbed bed's (the bed's mean

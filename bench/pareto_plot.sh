@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Run time vs error of the speed-up knobs as a Pareto plot (issue 9): one point per paired-seed ensemble of
+# Run time vs error of the speed-up knobs as a Pareto plot: one point per paired-seed ensemble of
 # bench/rank_ensemble.sh (OUT/ensemble-<reference>-vs-<knob>.json): x = speed-up of the knob over the reference
 # (summed wall times), y = mean paired difference of the window-mean resistance with its 95 % CI, the tolerance
 # band shaded. Prints the table (markdown) and writes the PNG, its data and the gnuplot script.

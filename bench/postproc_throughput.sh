@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Benchmark: brash-post throughput on a paper-size particle snapshot (issue 9). One short quick-case run
+# Benchmark: brash-post throughput on a paper-size particle snapshot. One short quick-case run
 # gives a valid run directory; brash-post is timed on it twice in the same sitting: with its own small
 # snapshots, and with them replaced by one synthetic snapshot of POST_BENCH_ATOMS spheres (default 420,000,
 # the paper case; deterministic values, the particles_<step>.csv layout of docs/case_format.md). The

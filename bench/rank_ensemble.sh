@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# A case run as an ensemble of packing seeds, two ways per seed (issue 4: "the quick case mean resistance on 1 and 2
-# ranks within 1 %"; issue 9: a knob's error against the reference). A contact scene diverges chaotically from
+# A case run as an ensemble of packing seeds, two ways per seed (1 against 2 ranks, or a
+# knob against the reference). A contact scene diverges chaotically from
 # round-off, so one run per variant is one realisation each and their difference is dominated by run-to-run scatter.
 # Here every member is a packing seed (ice.seed); seed s runs as side A and as side B with the same packing (a pair),
 # so the pair's difference holds the chaotic scatter and the effect of the change, not the packing's. The result is
@@ -11,7 +11,7 @@
 # edits of the case, as in bench/speed_vs_error.sh), e.g. SIDE_B="1:run.timestep_s=2.0e-4" for the dt knob; NP
 # `ode`, `ode@DT` or `ode@DT@ITERATIONS` runs the side on brash-ode instead (at its default step, or `--dt DT`, and
 # `--iterations ITERATIONS` quickstep iterations), then brash-post;
-# TOL_PCT (1): the tolerance the CI is tested against (issue 9 asks 2 % for a knob). The wall-time ratio A / B of the
+# TOL_PCT (1): the tolerance the CI is tested against (2 % for a speed-up knob). The wall-time ratio A / B of the
 # summed runs is printed too (a knob's speed-up; only as fair as the load was alike when the two sides ran).
 # Part of make bench (~1 h on a fresh machine; re-prints once the runs exist). 1-rank runs go two at a time (JOBS,
 # one per core), others one at a time: ~4-5 min per quick-case pair on a quiet

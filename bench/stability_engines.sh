@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Benchmark: stability map ON THE ENGINES (docs/stability.md, "Engine stability map"; issue 10 item 1).
+# Benchmark: stability map ON THE ENGINES (docs/stability.md, "Engine stability map").
 # On cases/stability_small (JBC bow in ~875 spheres, 0.25 s), for LIGGGHTS (1 rank) and ODE, one run at a time:
 #   grid      time step x Ca (uniform 0, 0.5, 2, 10: fluid.ca_table: uniform <Ca>) x treatment (implicit, explicit)
 #             at the paper's speed, density ratio and E
