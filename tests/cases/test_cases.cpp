@@ -54,8 +54,8 @@ TEST(CaseFolders, EveryCommittedCaseLoads) {
   EXPECT_GE(n, 2);
 }
 
-// Every committed case's generated packing passes the check every runner makes before it starts (issue 33:
-// pieces in the channel, floating in the water, unique ids; brash::read_case_packing).
+// Every committed case's generated packing passes the check every runner makes before it starts (pieces in the
+// channel, floating in the water, unique ids; brash::read_case_packing).
 TEST(CaseFolders, GeneratedPackingsPassTheRunnersCheck) {
   const fs::path dir = temp_dir("generated_packings");
   int n = 0;

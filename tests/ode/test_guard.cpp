@@ -129,7 +129,7 @@ TEST_F(OdeGuard, RunawayKineticEnergy) {
 
 // A piece the domain or zmax guard would stop at step 0, or one beyond the channel's end that would leave the
 // scene at once, cannot be the case's ice: brash-ode refuses the packing naming its file and line (row 721 is
-// line 723) before it makes the run directory (issue 33; brash::read_case_packing, shared by every runner).
+// line 723) before it makes the run directory (brash::read_case_packing, shared by every runner).
 TEST_F(OdeGuard, PieceOutsideTheChannelOrTheWaterIsRefusedBeforeTheRun) {
   const struct {
     const char *name, *row, *problem;

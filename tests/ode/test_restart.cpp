@@ -1,4 +1,4 @@
-// brash-ode restart / resume (issue 10 item 4) on a small scene: the YADE smoke case (720 spheres d 35 mm,
+// brash-ode restart / resume on a small scene: the YADE smoke case (720 spheres d 35 mm,
 // the JBC bow entering the ice), 0.2 s at dt 5e-4 (400 steps), restart file every 0.04 s (80 steps).
 //   - uninterrupted run A;
 //   - run B stopped like a kill -9 after step 230 (hidden --crash-after-step: std::_Exit, no cleanup), then

@@ -1,5 +1,5 @@
 // Single sphere through ODE vs the reference integrator (velocity Verlet) and the closed forms, at the
-// production time step dt = 5e-4 s. Tolerance: 0.5 % (issue 7).
+// production time step dt = 5e-4 s. Tolerance: 0.5 %.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -121,7 +121,7 @@ TEST(Fsicr, PowerFormula) {
   EXPECT_NEAR(fsicr_power_kW(1e6, 2.03, 7.0), 2.03 * std::pow(1000.0, 1.5) / 7.0, 1e-9);
 }
 
-// Geometry no hull has (issue 33): each problem named by its parameter and value, through the caller's names.
+// Geometry no hull has: each problem named by its parameter and value, through the caller's names.
 TEST(Fsicr, ImpossibleValuesAreNamed) {
   EXPECT_TRUE(fsicr_impossible_values(panamax(25, 60, 100)).empty());
   auto p = panamax(25, 60, 0);  // no parallel mid-body: possible

@@ -1,4 +1,4 @@
-// Stability map of the engine-independent core (issue 10, docs/stability.md): one ice sphere integrated by
+// Stability map of the engine-independent core (docs/stability.md): one ice sphere integrated by
 // brash::core::ReferenceSphere (velocity Verlet exactly as LIGGGHTS' nve/sphere + fix icefluid) from an
 // "impact" (velocity (v0, 0, -v0), as a piece pushed forward and down by the bow) at floating equilibrium.
 // A run is unstable when the state stops being finite, the speed grows beyond 5 (sqrt(2) v0 + 1 m/s)

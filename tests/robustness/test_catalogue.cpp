@@ -1,4 +1,4 @@
-// Catalogue of bad inputs (issue 10): case files, packings, hull meshes, run files of brash-post and
+// Catalogue of bad inputs: case files, packings, hull meshes, run files of brash-post and
 // command-line arguments. Each entry must be rejected with the expected error type / exit code and a
 // message that names the file (and the line or key where there is one) and the problem.
 // LIGGGHTS fix arguments: tests/liggghts/test_bed_and_errors.cpp (fix icefluid) and
@@ -179,7 +179,7 @@ std::vector<Entry> catalogue() {
   c.push_back(bad_case("case_dt_above_output_interval",
                        "name: x\nrun: {timestep_s: 0.02, output_interval_s: 0.01}\n",
                        {"{dir}/case.yaml:2", "key 'run.timestep_s'", "longer than run.output_interval_s"}));
-  // New check (issue 10): dt too large for the Hertz contact stiffness (Rayleigh time of the smallest sphere).
+  // dt too large for the Hertz contact stiffness (Rayleigh time of the smallest sphere).
   c.push_back(bad_case("case_dt_too_large_for_contact_stiffness",
                        "name: x\ncontact: {youngs_modulus_pa: 1.0e9}\nrun: {timestep_s: 5.0e-5}\n",
                        {"{dir}/case.yaml:3", "key 'run.timestep_s'", "Rayleigh time", "contacts are unstable"}));
@@ -199,14 +199,14 @@ std::vector<Entry> catalogue() {
                        {"{dir}/case.yaml:3", "key 'fsicr'", "keys must be plain names"}));
   c.push_back(bad_case("case_mapping_as_top_key", "name: x\n? {a: 1}\n: 2\n",
                        {"{dir}/case.yaml:2", "key '<top>'", "keys must be plain names"}));
-  // Found by a bad-input battery (issue 33): yaml-cpp keeps one of two equal keys without a word.
+  // Found by a bad-input battery: yaml-cpp keeps one of two equal keys without a word.
   c.push_back(bad_case("case_key_given_twice", "name: x\nice:\n  seed: 1\n  porosity: 0.3\n  seed: 2\n",
                        {"{dir}/case.yaml:5:3", "key 'ice.seed'", "given twice", "first at line 3"}));
   c.push_back(bad_case("case_key_given_twice_in_a_flow_mapping", "name: x\nship: {speed_m_s: 0.3, speed_m_s: 0.5}\n",
                        {"{dir}/case.yaml:2", "key 'ship.speed_m_s'", "given twice", "first at line 2"}));
   c.push_back(bad_case("case_section_given_twice", "name: x\nice: {seed: 1}\nrun: {duration_s: 4}\nice: {porosity: 0.3}\n",
                        {"{dir}/case.yaml:4:1", "key 'ice'", "given twice", "first at line 2"}));
-  // An ice layer thinner than one piece (issue 33) was accepted without a word.
+  // An ice layer thinner than one piece was accepted without a word.
   c.push_back(bad_case("case_ice_thinner_than_a_piece", "name: x\nice: {thickness_m: 0.03, diameter_mean_m: 0.035}\n",
                        {"{dir}/case.yaml:2", "key 'ice.thickness_m'", "0.03 m", "ice.diameter_mean_m = 0.035 m"}));
   c.push_back(bad_case("case_default_thickness_thinner_than_the_pieces", "name: x\nice:\n  diameter_mean_m: 0.04\n",
@@ -236,13 +236,13 @@ std::vector<Entry> catalogue() {
   c.push_back(bad_packing("packing_wrong_header", "id,x,y,z,r\n1,0,0,0,0.02\n",
                           {"{dir}/packing.csv:1", "expected header 'id,x,y,z,diameter'"}));
   c.push_back(bad_packing("packing_empty", "", {"{dir}/packing.csv", "no 'id,x,y,z,diameter' header"}));
-  // New check (issue 10): overlapping spheres were read silently before.
+  // overlapping spheres were read silently before.
   c.push_back(bad_packing("packing_overlapping_spheres", ph + "1,0.1,0.2,0,0.02\n2,0.5,0.5,0,0.02\n3,0.11,0.2,0,0.02\n",
                           {"{dir}/packing.csv:5", "sphere id 3 overlaps sphere id 1 (line 3)", "must not overlap"}));
-  // Two pieces with one id (issue 33) were read silently.
+  // Two pieces with one id were read silently.
   c.push_back(bad_packing("packing_duplicate_id", ph + "1,0.1,0.2,0,0.02\n2,0.5,0.5,0,0.02\n1,0.9,0.2,0,0.02\n",
                           {"{dir}/packing.csv:5", "piece id 1 is given twice", "first at line 3"}));
-  // Pieces that cannot be the case's ice (issue 33): they reached LIGGGHTS and stopped it with "Did not assign all
+  // Pieces that cannot be the case's ice: they reached LIGGGHTS and stopped it with "Did not assign all
   // atoms correctly" (outside its box), or ran. Each piece must lie in the channel and float in the water.
   c.push_back(bad_case_packing("packing_piece_beyond_the_channel_end", "2,1.2,0,0,0.035",
                                {"{dir}/packing.csv:3", "piece id 2 (x 1.2, y 0, z 0 m, d 0.035 m)",
@@ -421,7 +421,7 @@ TEST(Catalogue, GeneratedPackingReadsBack) {
   EXPECT_EQ(brash::read_packing_csv(dir / "packing.csv").size(), p.spheres.size());
 }
 
-// The case check's bounds take what a packing may hold (issue 33): pieces touching an end and a side wall, one
+// The case check's bounds take what a packing may hold: pieces touching an end and a side wall, one
 // whose bottom is just under a diameter above the water, one just under 5 ice thicknesses down.
 TEST(Catalogue, CasePackingNearTheBoundsReads) {
   const fs::path dir = fresh_dir("packing_near_bounds");

@@ -64,7 +64,7 @@ TEST_P(Cli, RejectedWithClearMessage) {
 INSTANTIATE_TEST_SUITE_P(BadArguments, Cli, ::testing::ValuesIn(commands()),
                          [](const ::testing::TestParamInfo<Entry>& i) { return i.param.name; });
 
-// A packing that cannot be the case's ice (issue 33): a piece beyond the channel's end, one far above the water,
+// A packing that cannot be the case's ice: a piece beyond the channel's end, one far above the water,
 // two pieces with one id. They used to reach LIGGGHTS (and stop it with "Did not assign all atoms correctly")
 // or run; brash-liggghts-run now refuses them naming the packing file and line, before it makes the run
 // directory.
@@ -93,7 +93,7 @@ TEST(CliPacking, RunnerRefusesAPackingThatIsNotTheCasesIceBeforeWritingAnything)
 }
 
 #ifdef BRASH_POST_EXE
-// brash-post fsicr with geometry no hull has (issue 33) printed "R_CH = -nan kN" (negative beam) or a number
+// brash-post fsicr with geometry no hull has printed "R_CH = -nan kN" (negative beam) or a number
 // with a validity-range warning, and exited 0. Impossible values are input errors naming the option (exit 2,
 // nothing computed); values outside the rule's validity range stay warnings.
 TEST(CliFsicr, ImpossibleGeometryIsAnErrorNamingTheOption) {

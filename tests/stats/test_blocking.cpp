@@ -45,7 +45,7 @@ TEST(Blocking, ConstantAndWhiteNoise) {
   EXPECT_NEAR(rw.sem, 1 / std::sqrt(4096.0), 0.25 / std::sqrt(4096.0));
 }
 
-// The acceptance test of issue 6: for each phi the estimated Var(mean), averaged over 40 seeds,
+// The block-averaging acceptance test: for each phi the estimated Var(mean), averaged over 40 seeds,
 // is within 10 % of the exact value. N = 2500 is the paper window (25 s at 0.01 s), N = 16384 a longer one.
 TEST(Blocking, AR1VarianceOfMeanWithin10Percent) {
   for (const std::size_t n : {std::size_t{2500}, std::size_t{16384}}) {
