@@ -17,16 +17,11 @@ namespace fs = std::filesystem;
 namespace brash::post::study_report {
 namespace {
 
-struct Link {  // a file of the figure folder as the document links it
-  std::string fig_dir_from_doc;
+struct Link {  // a file (the figure folder's, a run's own plot) as the document links it
   fs::path doc_dir;  // absolute
+  // Relative to the document as the paths name it (links are not resolved: a page and the folders beside it may
+  // be reached through one).
   std::string operator()(const fs::path& file) const {
-    const std::string f = file.filename().string();
-    return fig_dir_from_doc.empty() || fig_dir_from_doc == "." ? f : fig_dir_from_doc + "/" + f;
-  }
-  // Any other file (a run's own plot), relative to the document as the paths name it (links are not resolved:
-  // a page and the folders beside it may be reached through one).
-  std::string to(const fs::path& file) const {
     return fs::absolute(file).lexically_normal().lexically_relative(doc_dir).generic_string();
   }
 };
@@ -101,7 +96,7 @@ std::string run_figures(const Run& r, const TextTemplate& text, const Link& link
   const fs::path plot_dir = fs::exists(r.run_dir / "force_history.png") || full_dir.empty() ? r.run_dir : full_dir;
   const fs::path fh = plot_dir / "force_history.png";
   if (fs::exists(fh)) {
-    md += fmt::format("\n\n![{} force history]({})\n\n{}", r.ref, link.to(fh),
+    md += fmt::format("\n\n![{} force history]({})\n\n{}", r.ref, link(fh),
                       text.fill("figures.force_history_caption", {{"source", show_path(fh)}}));
   } else {
     md += " " + text.fill("figures.no_force_history", {{"run_dir", show_path(r.run_dir)}});
@@ -110,7 +105,7 @@ std::string run_figures(const Run& r, const TextTemplate& text, const Link& link
   const fs::path views = want_views ? latest_ice_views(plot_dir) : fs::path();
   if (!views.empty()) {
     engines_with_views.insert(r.engine);
-    md += fmt::format("\n\n![{} ice views]({})\n\n{}", r.ref, link.to(views),
+    md += fmt::format("\n\n![{} ice views]({})\n\n{}", r.ref, link(views),
                       text.fill("figures.ice_views_caption", {{"source", show_path(views)}}));
   }
   return md + paraview_note(r, full_dir, text) + "\n\n";
@@ -127,7 +122,7 @@ std::string section_figures(const Study& s, const TextTemplate& text, const fs::
   fs::remove_all(fig_dir, ec);
   fs::create_directories(fig_dir);
   const fs::path doc_abs = fs::absolute(doc_dir.empty() ? fs::path(".") : doc_dir).lexically_normal();
-  const Link link{fs::relative(fs::absolute(fig_dir), doc_abs, ec).string(), doc_abs};
+  const Link link{doc_abs};
   md += bars_figure(s, text, runs, fig_dir, link);
   md += histories_figure(s, text, fig_dir, link);
   std::set<std::string> engines_with_views;
