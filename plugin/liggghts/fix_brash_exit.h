@@ -1,5 +1,5 @@
-/* fix brash/exit: pieces that leave the scene through the channel's open ends are removed (issue 11: the
-   paper run stopped at t = 33 s when a piece coasting backwards left the box).
+/* fix brash/exit: pieces that leave the scene through the channel's open ends are removed (a piece coasting
+   out of the box would otherwise stop LIGGGHTS with 'ERROR: Lost atoms').
 
    fix ID group-ID brash/exit xlo XLO xhi XHI
 

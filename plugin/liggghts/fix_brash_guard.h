@@ -1,5 +1,5 @@
 /* fix brash/guard: run-time guards that stop a run with a clear message instead of letting it go
-   silently wrong (issue 10).
+   silently wrong (docs/stability.md).
 
    fix ID group-ID brash/guard every N keyword value ...
 

@@ -87,10 +87,10 @@ test ! -e "$tmp/archive/paper-liggghts-both-20s"
 expect '/paper/paper-liggghts-both-20s` | ? | liggghts | added_mass | **IN PROGRESS**'
 test ! -e "$tmp/paper/cases"
 
-# an ODE paper run (they outlast a session's machine) with a partial record: the record so far is archived
-# (complete rows only), the run is listed with its bins beside the LIGGGHTS run of the same fluid model (here a
-# stand-in at 1.1x the drag stand-in's force), and once its directory is gone it is listed from the archive as
-# stopped part-way
+# an ODE paper run (it takes tens of hours and is archived while it goes on) with a partial record: the record
+# so far is archived (complete rows only), the run is listed with its bins beside the LIGGGHTS run of the same
+# fluid model (here a stand-in at 1.1x the drag stand-in's force), and once its directory is gone it is listed
+# from the archive as stopped part-way
 o="$tmp/paper/paper-ode-drag-20s"
 mkdir -p "$o"
 sed 's/"engine": "liggghts"/"engine": "ode"/' "$tmp/work/runs/smoke_drag/meta.json" > "$o/meta.json"

@@ -551,7 +551,7 @@ TEST(StudyReport, BadManifestIsAnError) {
   EXPECT_NE(run_tool(d, fmt::format("'{}' --out '{}'", (d / "nothing.tsv").string(), (d / "study.md").string())), 0);
 }
 
-// Issue 11 "where we differ, say why": the paper-case set-up table is read from each paper run's own
+// Where we differ from the paper, say why: the paper-case set-up table is read from each paper run's own
 // case.yaml and meta.json (started runs too), never typed: a changed stiffness, step or far-field rule shows
 // up in it.
 TEST(StudyReport, PaperSetUpTableComesFromEachRunsCaseAndMeta) {

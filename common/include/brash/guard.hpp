@@ -1,4 +1,4 @@
-// brash::guard: the run-time guards shared by every engine (issue 10, docs/stability.md "Run-time guards").
+// brash::guard: the run-time guards shared by every engine (docs/stability.md "Run-time guards").
 // Pure functions on value types: an engine adapter (LIGGGHTS fix brash/guard, brash-ode, the YADE adapter)
 // reads a piece's state, calls check_piece() and stops the run with stop_message() on the first cause.
 //

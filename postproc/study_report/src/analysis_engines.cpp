@@ -66,9 +66,10 @@ std::vector<double> bin_means(const ForceHistory& h, double w_s, double t_end_s)
   return out;
 }
 
-// An unfinished run of another engine (the ODE paper runs outlast a session's machine) beside the complete
-// LIGGGHTS run of the same case and fluid model with a force record, over the model time both have reached: the
-// engine comparison on the scene itself for as far as it goes (the bow entering the ice, not the window).
+// An unfinished run of another engine (an ODE paper run takes tens of hours and is archived while it goes
+// on) beside the complete LIGGGHTS run of the same case and fluid model with a force record, over the model
+// time both have reached: the engine comparison on the scene itself for as far as it goes (the bow entering
+// the ice, not the window).
 std::vector<EngineSoFar> engines_so_far(const std::vector<const Run*>& sorted_runs) {
   std::vector<EngineSoFar> out;
   for (const Run* r : sorted_runs) {

@@ -1,4 +1,4 @@
-// Exact sphere-hull overlap queries on a closed triangle mesh (run-time hull penetration guard, issue 10).
+// Exact sphere-hull overlap queries on a closed triangle mesh (the run-time hull penetration guard).
 //
 // Built once from the hull Mesh in its own frame (STL frame: keel z = 0). Two uniform grids bin the
 // triangles:

@@ -1,4 +1,4 @@
-// Stability analysis of one finished, stopped or crashed run directory (issue 10, docs/stability.md
+// Stability analysis of one finished, stopped or crashed run directory (docs/stability.md
 // "Engine stability map"; `brash-post stability RUN_DIR`, bench/stability_engines.sh).
 //
 // From meta.json: how the run ended (complete / stopped by a run-time guard, which one, its message /

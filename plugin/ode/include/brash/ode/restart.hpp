@@ -1,4 +1,4 @@
-// brash-ode restart files (issue 10 item 4): RUN_DIR/restart/restart_<step>.bin, binary, written atomically
+// brash-ode restart files, so long runs resume: RUN_DIR/restart/restart_<step>.bin, binary, written atomically
 // (temporary file + rename), the last two kept.
 //
 // File = "BRASHODE" (8 bytes) | u32 version | u64 payload size | payload | u64 FNV-1a of the payload | "ENDR".
