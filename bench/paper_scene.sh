@@ -2,9 +2,10 @@
 # Benchmark on the paper scene itself: 1,000 steps from a restart file of a paper-case run directory
 # (brash-liggghts-run cases/jbc_ia_5kn ...; needs restart/a.restart or b.restart), timed in one sitting:
 #   far field on, 2 ranks  |  far field on, 1 rank  (parallel efficiency)  |  far field off, 2 ranks (its speed-up);
-# a run without the far field (the paper case's default since session 6) is timed on 2 and 1 ranks, and with the
-# far field switched on (the run's case.yaml with speedups.farfield: true, i.e. its window and wake rule, input
-# written by brash-liggghts-run --prepare-only) on 2 ranks: what the far field would save on this scene, at this time.
+# a run without the far field (the paper case's default) is timed on 2 and 1 ranks, and with the far field switched
+# on (the run's case.yaml with speedups.farfield: true, i.e. its window, with each wake rule of WAKE_RULES, default
+# "force neighbour_speed" (speedups.farfield_wake_by); input written by brash-liggghts-run --prepare-only) on 2 ranks:
+# what the far field would save on this scene, at this time.
 # The run's own in.lmp is used with dumps, restart and force output removed; "off" drops fix brash/farfield,
 # deletes group idle and its neighbour exclusion (every piece integrated, every pair computed).
 # SKIP_1RANK=1 leaves out the 1-rank timing (the slowest).
@@ -30,14 +31,18 @@ strip() {  # in.lmp -> the same scene from start.restart, without outputs, for $
 strip "$run_dir/in.lmp" > "$work/in_on.lmp"
 sed -e '/^fix farfield/d' -e 's/^group idle subtract all all/group idle delete/' \
     -e 's/^neigh_modify delay 0 exclude group idle idle/neigh_modify delay 0/' "$work/in_on.lmp" > "$work/in_off.lmp"
-# The far field is off in the paper case since session 6: then the run's own scene is measured on 1 and 2 ranks, and
-# the same scene with the case's far field switched on.
+# The far field is off in the paper case: then the run's own scene is measured on 1 and 2 ranks, and the same scene
+# with the case's far field switched on, once per wake rule.
 has_ff=0; grep -q '^fix farfield' "$work/in_on.lmp" && has_ff=1
+wake_rules="${WAKE_RULES:-force neighbour_speed}"
 if [ "$has_ff" = 0 ]; then
-  "$bin/brash-case" derive "$run_dir/case.yaml" --set speedups.farfield=true --out "$work/ffcase" > /dev/null
-  "$bin/brash-liggghts-run" "$work/ffcase" --np 2 --out "$work/ffrun" --prepare-only > "$work/ffprepare.log" 2>&1 ||
-    { cat "$work/ffprepare.log" >&2; exit 1; }
-  strip "$work/ffrun/in.lmp" > "$work/in_ff.lmp"
+  for rule in $wake_rules; do
+    "$bin/brash-case" derive "$run_dir/case.yaml" --set speedups.farfield=true --set "speedups.farfield_wake_by=$rule" \
+      --out "$work/ffcase_$rule" > /dev/null
+    "$bin/brash-liggghts-run" "$work/ffcase_$rule" --np 2 --out "$work/ffrun_$rule" --prepare-only > "$work/ffprepare.log" 2>&1 ||
+      { cat "$work/ffprepare.log" >&2; exit 1; }
+    strip "$work/ffrun_$rule/in.lmp" > "$work/in_ff_$rule.lmp"
+  done
 fi
 cd "$work"
 loop() {  # $1 input, $2 ranks -> loop time [s]
@@ -46,19 +51,24 @@ loop() {  # $1 input, $2 ranks -> loop time [s]
   awk '/^Loop time of/ {print $4; exit}' "log_$1_$2.txt"
 }
 label="far field on, "; [ "$has_ff" = 1 ] || label="run's scene,  "
-t_on2=$(loop in_on.lmp 2); t_on1=0; t_off2=0; t_ff2=0
+t_on2=$(loop in_on.lmp 2); t_on1=0; t_off2=0
 [ "${SKIP_1RANK:-0}" = 1 ] || t_on1=$(loop in_on.lmp 1)
-if [ "$has_ff" = 1 ]; then t_off2=$(loop in_off.lmp 2); else t_ff2=$(loop in_ff.lmp 2); fi
+declare -A t_ff2
+if [ "$has_ff" = 1 ]; then t_off2=$(loop in_off.lmp 2); else for rule in $wake_rules; do t_ff2[$rule]=$(loop "in_ff_$rule.lmp" 2); done; fi
 atoms=$(awk '/^Loop time of/ {print $12; exit}' log_in_on.lmp_2.txt)
 t_restart=$(awk 'h { print $2; exit } $1 == "Step" { h = 1 }' log_in_on.lmp_2.txt)  # thermo: step, model time
 echo "== paper scene from $(basename "$restart") (t = $t_restart s) of $run_dir ($atoms spheres, $steps steps)"
-awk -v a="$t_on2" -v b="$t_on1" -v c="$t_off2" -v f="$t_ff2" -v l="$label" 'BEGIN {
+awk -v a="$t_on2" -v b="$t_on1" -v c="$t_off2" -v l="$label" 'BEGIN {
   printf "%s2 ranks: %.1f s\n", l, a;
   if (b > 0) printf "%s1 rank : %.1f s   parallel efficiency 2 ranks: %.0f %%\n", l, b, 100 * b / (2 * a);
   if (c > 0) printf "far field off, 2 ranks: %.1f s   far-field speed-up: %.2fx\n", c, c / a;
-  if (f > 0) printf "far field on (case window + wake rule), 2 ranks: %.1f s   far-field speed-up: %.2fx\n", f, a / f;
 }'
-# the far field's idle pieces (thermo's last column, f_farfield[1]) at the first and the last thermo line
-[ "$t_ff2" = 0 ] || awk -v n="$atoms" '$1 == "Step" { h = 1; next } h && /^ *[0-9]/ { if (first == "") first = $NF; last = $NF }
-  /^Loop time/ { h = 0 } END { printf "  idle pieces with the far field: %d (%.0f %%) at the start, %d (%.0f %%) at the end\n",
-  first, 100 * first / n, last, 100 * last / n }' log_in_ff.lmp_2.txt
+[ "$has_ff" = 1 ] && exit 0
+for rule in $wake_rules; do
+  awk -v a="$t_on2" -v f="${t_ff2[$rule]}" -v r="$rule" 'BEGIN {
+    printf "far field on (case window, wake by %s), 2 ranks: %.1f s   far-field speed-up: %.2fx\n", r, f, a / f }'
+  # its idle pieces (thermo's last column, f_farfield[1]) at the first and the last thermo line
+  awk -v n="$atoms" '$1 == "Step" { h = 1; next } h && /^ *[0-9]/ { if (first == "") first = $NF; last = $NF }
+    /^Loop time/ { h = 0 } END { printf "  idle pieces: %d (%.0f %%) at the start, %d (%.0f %%) at the end\n",
+    first, 100 * first / n, last, 100 * last / n }' "log_in_ff_$rule.lmp_2.txt"
+done

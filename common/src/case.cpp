@@ -44,6 +44,7 @@ constexpr EnumText<DragLaw> kDragLaw[] = {{DragLaw::Constant, "constant"},
 constexpr EnumText<HullFlow> kHullFlow[] = {
     {HullFlow::None, "none"}, {HullFlow::ThinShip, "thin_ship"}, {HullFlow::Panel, "panel"}};
 constexpr EnumText<ChannelEnds> kChannelEnds[] = {{ChannelEnds::Open, "open"}, {ChannelEnds::Walls, "walls"}};
+constexpr EnumText<WakeBy> kWakeBy[] = {{WakeBy::Force, "force"}, {WakeBy::NeighbourSpeed, "neighbour_speed"}};
 constexpr EnumText<CaTable> kCaTable[] = {{CaTable::Table1, "table1"},
                                           {CaTable::Text, "text"},
                                           {CaTable::Zero, "zero"},
@@ -441,7 +442,7 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
   {  // speedups (docs/performance.md)
     const auto s = r.section(root, "speedups",
                              {"farfield", "farfield_ahead_m", "farfield_behind_m", "farfield_every_steps",
-                              "farfield_wake_force_weight", "farfield_wake_speed_m_s", "symmetry_y", "neighbor_skin_d", "early_stop_rel_ci", "early_stop_trend_check"});
+                              "farfield_wake_force_weight", "farfield_wake_speed_m_s", "farfield_wake_by", "symmetry_y", "neighbor_skin_d", "early_stop_rel_ci", "early_stop_trend_check"});
     r.boolean(s, "speedups", "farfield", c.speedups.farfield);
     r.num(s, "speedups", "farfield_ahead_m", c.speedups.farfield_ahead_m, non_negative, ">= 0");
     r.num(s, "speedups", "farfield_behind_m", c.speedups.farfield_behind_m, non_negative, ">= 0");
@@ -452,6 +453,12 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
     r.num(s, "speedups", "farfield_wake_force_weight", c.speedups.farfield_wake_force_weight,
           [](double f) { return f >= 0 && f <= 1; }, "in [0, 1] (fraction of a piece's weight; 0 = the window alone)");
     r.num(s, "speedups", "farfield_wake_speed_m_s", c.speedups.farfield_wake_speed_m_s, non_negative, ">= 0");
+    r.enumeration(s, "speedups", "farfield_wake_by", kWakeBy, c.speedups.farfield_wake_by);
+    if (c.speedups.farfield && c.speedups.farfield_wake_by == WakeBy::NeighbourSpeed &&
+        !(c.speedups.farfield_wake_speed_m_s > 0))
+      r.fail(s["farfield_wake_speed_m_s"], "speedups.farfield_wake_speed_m_s",
+             "must be > 0 with farfield_wake_by: neighbour_speed (it is the speed that wakes idle ice; for the "
+             "window alone use farfield_wake_by: force with farfield_wake_force_weight: 0)");
     r.boolean(s, "speedups", "symmetry_y", c.speedups.symmetry_y);
     r.num(s, "speedups", "neighbor_skin_d", c.speedups.neighbor_skin_d,
           [](double k) { return k > 0 && k <= 2; }, "in (0, 2]");
@@ -628,6 +635,7 @@ std::string dump_case_yaml(const Case& c) {
   line("  ", "farfield_every_steps", fmt::format("{}", c.speedups.farfield_every_steps));
   line("  ", "farfield_wake_force_weight", num(c.speedups.farfield_wake_force_weight));
   line("  ", "farfield_wake_speed_m_s", num(c.speedups.farfield_wake_speed_m_s));
+  line("  ", "farfield_wake_by", std::string(to_string(c.speedups.farfield_wake_by)));
   line("  ", "symmetry_y", c.speedups.symmetry_y ? "true" : "false");
   line("  ", "neighbor_skin_d", num(c.speedups.neighbor_skin_d));
   line("  ", "early_stop_rel_ci", num(c.speedups.early_stop_rel_ci));

@@ -14,7 +14,9 @@
 #include "error.h"
 #include "force.h"
 #include "group.h"
+#include "neigh_list.h"
 #include "neighbor.h"
+#include "pair.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -65,8 +67,11 @@ FixBrashFarfield::FixBrashFarfield(LAMMPS* lmp, int narg, char** arg) : Fix(lmp,
       wake_speed_ = to_number(error, key, val);
       if (wake_speed_ < 0) error->all(FLERR, "fix brash/farfield: 'wake_speed' must be >= 0");
     } else if (key == "wake_force") {
-      wake_force_ = to_number(error, key, val);
+      wake_force_ = to_number(error, key, val), have_wake_force_ = true;
       if (wake_force_ < 0) error->all(FLERR, "fix brash/farfield: 'wake_force' must be >= 0");
+    } else if (key == "wake_neighbour_speed") {
+      wake_speed_ = to_number(error, key, val), by_neighbour_ = true;
+      if (!(wake_speed_ > 0)) error->all(FLERR, "fix brash/farfield: 'wake_neighbour_speed' must be > 0");
     } else if (key == "active") {
       active_name_ = val;
     } else if (key == "idle") {
@@ -74,7 +79,7 @@ FixBrashFarfield::FixBrashFarfield(LAMMPS* lmp, int narg, char** arg) : Fix(lmp,
     } else {
       const std::string msg = "fix brash/farfield: unknown keyword '" + key +
                               "' (expected every, ahead, behind, hull_x0, speed, bow_offset, stern_offset, "
-                              "wake_speed, wake_force, active, idle)";
+                              "wake_speed, wake_force, wake_neighbour_speed, active, idle)";
       error->all(FLERR, msg.c_str());
     }
     iarg += 2;
@@ -83,6 +88,8 @@ FixBrashFarfield::FixBrashFarfield(LAMMPS* lmp, int narg, char** arg) : Fix(lmp,
     error->all(FLERR,
                "fix brash/farfield: keywords ahead, behind, hull_x0, speed, bow_offset and stern_offset are required");
   if (stern_offset_ > bow_offset_) error->all(FLERR, "fix brash/farfield: stern_offset must be <= bow_offset");
+  if (by_neighbour_ && have_wake_force_)
+    error->all(FLERR, "fix brash/farfield: give either wake_force (with wake_speed) or wake_neighbour_speed, not both");
   const int ia = group->find(active_name_.c_str()), ii = group->find(idle_name_.c_str());
   if (ia < 0 || ii < 0) {
     const std::string msg = "fix brash/farfield: groups '" + active_name_ + "' and '" + idle_name_ +
@@ -104,17 +111,26 @@ FixBrashFarfield::FixBrashFarfield(LAMMPS* lmp, int narg, char** arg) : Fix(lmp,
   extvector = 0;
 }
 
-int FixBrashFarfield::setmask() { return wake_force_ > 0 ? (PRE_EXCHANGE | END_OF_STEP) : PRE_EXCHANGE; }
+// The force rule reads the step's complete forces (END_OF_STEP); the neighbour-speed rule reads velocities in
+// PRE_FORCE, where every local and ghost piece has the same half-step velocity (forward communication with vel
+// yes), so 1 and 2 ranks decide alike.
+int FixBrashFarfield::setmask() {
+  if (!wake_rule().enabled()) return PRE_EXCHANGE;
+  return PRE_EXCHANGE | (by_neighbour_ ? PRE_FORCE : END_OF_STEP);
+}
 
 void FixBrashFarfield::init() {
   // the group bits were looked up at creation; a deleted group would leave stale bits
   if (group->find(active_name_.c_str()) < 0 || group->find(idle_name_.c_str()) < 0)
     error->all(FLERR, "fix brash/farfield: the active or idle group was deleted");
-  if (wake_speed_ > 0 && wake_force_ <= 0)
+  if (!by_neighbour_ && wake_speed_ > 0 && wake_force_ <= 0)
     error->all(FLERR, "fix brash/farfield: wake_speed needs wake_force > 0 (the pieces the push has reached)");
-  if (wake_force_ > 0 && force->newton_pair)
+  if (wake_rule().enabled() && force->newton_pair)
     error->all(FLERR,
-               "fix brash/farfield: wake_force needs 'newton off' (the force on a local atom complete on its rank)");
+               "fix brash/farfield: a wake rule needs 'newton off' (the force on a local atom, and every pair of a "
+               "local atom, complete on its rank)");
+  if (by_neighbour_ && (force->pair == nullptr || !atom->radius_flag))
+    error->all(FLERR, "fix brash/farfield: wake_neighbour_speed needs a granular pair style (its neighbour list)");
 }
 
 // Before the first neighbour build of a run: membership for the current position of the hull (speed test only).
@@ -135,9 +151,25 @@ void FixBrashFarfield::pre_exchange() {
 }
 
 // An idle piece pushed beyond F (horizontal force: active neighbours and walls) wakes now: integrated from the
-// next step on. Its pairs with idle neighbours enter the neighbour list at the next build, forced within
-// kWakeBuildSteps (ghost copies get the new mask then too); every rank takes the same decision (Allreduce).
-void FixBrashFarfield::end_of_step() {
+// next step on. An idle piece touched by a piece faster than V (PRE_FORCE) wakes now: from this step's second
+// half-step on (it starts from rest at the half step). Its pairs with idle neighbours enter the neighbour list at
+// the next build, forced within kWakeBuildSteps (ghost copies get the new mask then too); every rank takes the
+// same decision (Allreduce).
+void FixBrashFarfield::end_of_step() { after_wake(wake_pushed_pieces()); }
+
+void FixBrashFarfield::pre_force(int) { after_wake(wake_touched_by_fast_pieces()); }
+
+void FixBrashFarfield::after_wake(int woke) {
+  int any = 0;
+  MPI_Allreduce(&woke, &any, 1, MPI_INT, MPI_MAX, world);
+  if (any) {
+    const bigint step = update->ntimestep;
+    const bigint soon = std::max(step + 1, neighbor->lastcall + kWakeBuildSteps);
+    next_reneighbor = std::min(next_reneighbor, soon);
+  }
+}
+
+int FixBrashFarfield::wake_pushed_pieces() {
   double** f = atom->f;
   int* mask = atom->mask;
   const int nlocal = atom->nlocal;
@@ -148,13 +180,41 @@ void FixBrashFarfield::end_of_step() {
       mask[i] = (mask[i] | active_bit_) & ~idle_bit_;
       woke = 1;
     }
-  int any = 0;
-  MPI_Allreduce(&woke, &any, 1, MPI_INT, MPI_MAX, world);
-  if (any) {
-    const bigint step = update->ntimestep;
-    const bigint soon = std::max(step + 1, neighbor->lastcall + kWakeBuildSteps);
-    next_reneighbor = std::min(next_reneighbor, soon);
+  return woke;
+}
+
+// The pair style's half list (newton off: a pair with a ghost is listed on both ranks, so each local piece sees
+// all its neighbours here; idle-idle pairs are excluded, and an idle piece has v = 0). A piece woken in this
+// pass has v = 0 and wakes no one before the next step.
+int FixBrashFarfield::wake_touched_by_fast_pieces() {
+  const NeighList* list = force->pair->list;
+  double** x = atom->x;
+  double** v = atom->v;
+  const double* radius = atom->radius;
+  int* mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const brash::core::WakeRule rule = wake_rule();
+  auto wake_if_touched = [&](int idle, int other) {
+    if (!(mask[idle] & idle_bit_)) return false;
+    if (!brash::core::wakes_by_neighbour(rule, brash::core::Vec3(v[other][0], v[other][1], v[other][2])))
+      return false;
+    if (!brash::core::touching(x[idle][0] - x[other][0], x[idle][1] - x[other][1], x[idle][2] - x[other][2],
+                               radius[idle], radius[other]))
+      return false;
+    mask[idle] = (mask[idle] | active_bit_) & ~idle_bit_;
+    return true;
+  };
+  int woke = 0;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const int* jlist = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      if (wake_if_touched(i, j)) woke = 1;
+      if (j < nlocal && wake_if_touched(j, i)) woke = 1;
+    }
   }
+  return woke;
 }
 
 void FixBrashFarfield::update_membership(bool setup) {

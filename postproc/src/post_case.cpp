@@ -34,7 +34,7 @@ PostCase read_post_case(const std::filesystem::path& case_yaml) {
   put("L_bow_m", c.fsicr.L_bow_m);
   put("A_wf_m2", c.fsicr.A_wf_m2);
   p.psi_override_deg = c.fsicr.psi_deg;
-  p.farfield_window_alone = c.speedups.farfield && c.speedups.farfield_wake_force_weight == 0;
+  p.farfield_window_alone = farfield_window_alone(c.speedups);
   p.references = c.references;
   return p;
 }

@@ -159,6 +159,7 @@ TEST(CaseLoader, DumpThenLoadGivesTheSameCase) {
     c.speedups.farfield_every_steps = 37;
     c.speedups.farfield_wake_force_weight = 0.02;
     c.speedups.farfield_wake_speed_m_s = 1.0 / 7.0;
+    c.speedups.farfield_wake_by = brash::WakeBy::NeighbourSpeed;
     c.speedups.symmetry_y = true;
     c.speedups.neighbor_skin_d = 0.35;
     c.speedups.early_stop_rel_ci = 0.03;
@@ -361,6 +362,7 @@ TEST(CaseLoader, SpeedupsDefaultOffAndRead) {
   EXPECT_FALSE(d.speedups.symmetry_y);
   EXPECT_DOUBLE_EQ(d.speedups.neighbor_skin_d, 0.2);
   EXPECT_DOUBLE_EQ(d.speedups.farfield_wake_force_weight, 1e-3);  // the far field wakes pushed ice by default
+  EXPECT_EQ(d.speedups.farfield_wake_by, brash::WakeBy::Force);
   EXPECT_TRUE(d.speedups.early_stop_trend_check);
   EXPECT_FALSE(brash::parse_case("name: x\nspeedups:\n  early_stop_trend_check: false\n", kRepo, "mem")
                    .speedups.early_stop_trend_check);
@@ -384,6 +386,9 @@ TEST(CaseLoaderErrors, SpeedupsKeysNamed) {
   expect_error("name: x\nspeedups: {farfield_ahead_m: -1}\n", {"speedups.farfield_ahead_m", ">= 0"});
   expect_error("name: x\nspeedups: {farfield_wake_force_weight: -0.1}\n", {"speedups.farfield_wake_force_weight", "[0, 1]"});
   expect_error("name: x\nspeedups: {farfield_wake_speed_m_s: -1}\n", {"speedups.farfield_wake_speed_m_s", ">= 0"});
+  expect_error("name: x\nspeedups: {farfield_wake_by: push}\n", {"speedups.farfield_wake_by", "force", "neighbour_speed"});
+  expect_error("name: x\nspeedups: {farfield: true, farfield_wake_by: neighbour_speed, farfield_wake_speed_m_s: 0}\n",
+               {"speedups.farfield_wake_speed_m_s", "> 0", "neighbour_speed"});
   expect_error("name: x\nspeedups: {farfield: true, farfield_ahead_m: 0.01}\n",
                {"speedups.farfield_ahead_m", "2 ice diameters"});
   expect_error("name: x\nspeedups: {neighbor_skin_d: 0}\n", {"speedups.neighbor_skin_d", "(0, 2]"});

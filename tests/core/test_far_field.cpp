@@ -1,4 +1,4 @@
-// The far-field rule (far_field.hpp): window, wake by force, membership at an update.
+// The far-field rule (far_field.hpp): window, wake by force or by a neighbour's speed, membership at an update.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -83,4 +83,36 @@ TEST(FarFieldMembership, BehindAndBesideIdleOnceSlow) {
   // at the threshold speed a piece counts as slow
   const Vec3 at_threshold(0.0, -0.25, 0.0);
   EXPECT_TRUE(idle_after_update(WakeRule{0.5, 0.25}, FarFieldZone::Behind, false, false, at_threshold));
+}
+
+TEST(WakeRule, ByNeighbourSpeedWakesNextToAFastPieceOnly) {
+  const WakeRule by_neighbour{0.0, 0.005, brash::WakeBy::NeighbourSpeed};
+  EXPECT_TRUE(by_neighbour.enabled());
+  EXPECT_FALSE(wakes_by_neighbour(by_neighbour, kRest));  // a resting (or idle) neighbour: stays idle
+  EXPECT_FALSE(wakes_by_neighbour(by_neighbour, kSlow));
+  EXPECT_TRUE(wakes_by_neighbour(by_neighbour, kFast));
+  EXPECT_FALSE(wakes_by_neighbour(by_neighbour, Vec3(0.0, 0.0, -0.005)));  // at the threshold: not above
+  // each rule answers only its own test
+  EXPECT_FALSE(wakes(by_neighbour, 100.0, 100.0));
+  EXPECT_FALSE(wakes_by_neighbour(kWake, kFast * 1000));
+  // off: speed 0 (the window alone), whatever the neighbour does
+  const WakeRule off{0.02, 0.0, brash::WakeBy::NeighbourSpeed};
+  EXPECT_FALSE(off.enabled());
+  EXPECT_FALSE(wakes_by_neighbour(off, kFast));
+  EXPECT_TRUE(idle_after_update(off, FarFieldZone::Ahead, false, false, kFast));
+}
+
+TEST(WakeRule, ByNeighbourSpeedKeepsTheMembershipRule) {
+  const WakeRule by_neighbour{0.0, 0.005, brash::WakeBy::NeighbourSpeed};
+  EXPECT_FALSE(idle_after_update(by_neighbour, FarFieldZone::Ahead, false, false, kRest));  // woken stays
+  EXPECT_TRUE(idle_after_update(by_neighbour, FarFieldZone::Ahead, false, true, kSlow));
+  EXPECT_TRUE(idle_after_update(by_neighbour, FarFieldZone::Behind, false, false, kSlow));
+  EXPECT_FALSE(idle_after_update(by_neighbour, FarFieldZone::Behind, true, false, kFast));
+}
+
+TEST(WakeRule, TouchingIsCentreDistanceBelowTheSumOfTheRadii) {
+  EXPECT_TRUE(touching(0.0199, 0.0, 0.0, 0.01, 0.01));
+  EXPECT_FALSE(touching(0.02, 0.0, 0.0, 0.01, 0.01));
+  EXPECT_TRUE(touching(0.012, -0.012, 0.008, 0.01, 0.0088));   // |d| 0.018762 < 0.0188
+  EXPECT_FALSE(touching(0.012, -0.012, 0.008, 0.01, 0.0087));  // |d| 0.018762 > 0.0187
 }

@@ -6,7 +6,9 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <map>
+#include <sstream>
 
 #include "liggghts_runner.h"
 
@@ -64,12 +66,12 @@ run {steps}
 }
 
 struct Atom {
-  double x, y, vy;
+  double x, y, vy, vx;
 };
 std::map<int, Atom> read_dump(const std::filesystem::path& file) {
   std::map<int, Atom> out;
   for (const auto& r : read_table(file))
-    if (r.size() == 7) out[static_cast<int>(r[0])] = {r[1], r[2], r[5]};
+    if (r.size() == 7) out[static_cast<int>(r[0])] = {r[1], r[2], r[5], r[4]};
   return out;
 }
 
@@ -149,8 +151,16 @@ constexpr int kChain = 12;
 constexpr double kWakeSteps = 6000, kChainDt = 1e-4;  // dt well below the contacts' Rayleigh time (~7e-4 s)
 
 // NoFix: every piece active (the reference); WindowAlone: the fix without a wake; Wake: wake_force 1e-4 N, wake_speed
-// 0.001 m/s.
-enum class Chain { NoFix, WindowAlone, Wake };
+// 0.001 m/s; WakeNeighbour: wake_neighbour_speed 1e-4 m/s. An idle piece is a wall until the piece pushing it is
+// faster than V: the chain, started from rest, lags 0.16 mm (2 % of its travel) behind the reference at V = 1e-3
+// m/s, and moves with it within 1 % at 1e-4 (what the rule's speed does to the resistance: docs/performance.md).
+enum class Chain { NoFix, WindowAlone, Wake, WakeNeighbour };
+
+std::string wake_keywords(Chain mode) {
+  if (mode == Chain::Wake) return " wake_speed 0.001 wake_force 1e-4";
+  if (mode == Chain::WakeNeighbour) return " wake_neighbour_speed 1e-4";
+  return "";
+}
 
 std::string chain_scene(Chain mode, int ranks) {
   std::string s = box_header(0.5, ranks);
@@ -180,8 +190,7 @@ run {steps}
                    fmt::arg("ff", mode == Chain::NoFix ? ""
                                   : "fix ff all brash/farfield every 100 ahead 0.035 behind 1 hull_x0 0 speed 0 "
                                     "bow_offset 0 stern_offset 0" +
-                                        std::string(mode == Chain::Wake ? " wake_speed 0.001 wake_force 1e-4" : "") +
-                                        "\n"),
+                                        wake_keywords(mode) + "\n"),
                    fmt::arg("ff_thermo", mode == Chain::NoFix ? "" : " f_ff[1] f_ff[2]"));
   return s;
 }
@@ -201,11 +210,11 @@ TEST(LiggghtsFarfield, WindowAloneMakesAnIdleWall) {
   EXPECT_DOUBLE_EQ(end.at(kChain + 2).x, 0.4) << "a lone moving piece outside the window is frozen";
 }
 
-TEST(LiggghtsFarfield, WakeForceLetsThePushTravelOneAndTwoRanks) {
+void check_push_travels(Chain mode, const std::string& name) {
   const double t_end = kWakeSteps * kChainDt;
   std::map<int, Atom> ends[2];
   for (int ranks : {1, 2}) {
-    const auto& end = ends[ranks - 1] = run_chain(Chain::Wake, ranks, fmt::format("farfield_chain_wake{}", ranks));
+    const auto& end = ends[ranks - 1] = run_chain(mode, ranks, fmt::format("{}{}", name, ranks));
     ASSERT_EQ(end.size(), static_cast<std::size_t>(kChain + 2));
     for (int id = 2; id <= kChain; ++id)
       EXPECT_GT(end.at(id).x, 0.01 + kD * (id - 1) + 1e-3) << "atom " << id << " on " << ranks << " rank(s)";
@@ -220,6 +229,90 @@ TEST(LiggghtsFarfield, WakeForceLetsThePushTravelOneAndTwoRanks) {
     const double x0 = 0.01 + kD * (id - 1), moved_ref = ref.at(id).x - x0, moved = ends[0].at(id).x - x0;
     EXPECT_GT(moved_ref, 1e-3);
     EXPECT_NEAR(moved, moved_ref, 0.01 * moved_ref) << "atom " << id;
+  }
+}
+
+TEST(LiggghtsFarfield, WakeForceLetsThePushTravelOneAndTwoRanks) {
+  check_push_travels(Chain::Wake, "farfield_chain_wake");
+}
+
+TEST(LiggghtsFarfield, WakeNeighbourSpeedLetsThePushTravelOneAndTwoRanks) {
+  check_push_travels(Chain::WakeNeighbour, "farfield_chain_neighbour");
+}
+
+// A loaded bed at rest: the chain pressed against a wall at its far end by the push on its first sphere, settled
+// with every piece active (viscous damping), then the fix with the window over the first two spheres. The idle
+// third sphere feels the second one's contact force but not its idle neighbour's (idle-idle pairs are excluded):
+// the force rule wakes it, and so on down the resting chain; the neighbour-speed rule leaves the chain idle.
+namespace {
+constexpr int kSettleSteps = 20000, kLoadedSteps = 2000;
+
+std::string loaded_chain_scene(Chain mode) {
+  std::string s = box_header(0.5, 1);
+  for (int k = 0; k < kChain; ++k) s += fmt::format("create_atoms 1 single {} 0 0 units box\n", 0.01 + kD * k);
+  s += fmt::format(R"(set group all diameter {d} density 900
+group pusher id 1
+neighbor 0.002 bin
+neigh_modify delay 0
+{contacts}
+fix end all wall/gran model hertz tangential history primitive type 1 xplane {wall_x}
+timestep {dt}
+fix push pusher addforce 2e-3 0 0
+fix settle all nve/sphere
+fix calm all viscous 0.05
+dump d all custom {every} dump.*.txt id x y z vx vy vz
+dump_modify d sort id
+run {settle}
+unfix settle
+unfix calm
+group active type 1
+group idle subtract all all
+neigh_modify exclude group idle idle
+fix ff all brash/farfield every 100 ahead 0.035 behind 1 hull_x0 0 speed 0 bow_offset 0 stern_offset 0{wake}
+fix integr active nve/sphere
+thermo_style custom step atoms f_ff[1] f_ff[2]
+thermo 100
+run {loaded}
+)",
+                   fmt::arg("d", kD), fmt::arg("wall_x", 0.01 + kD * (kChain - 1) + kD / 2), fmt::arg("dt", kChainDt),
+                   fmt::arg("contacts", brash::test::ice_contact_model("0.5")), fmt::arg("every", kLoadedSteps),
+                   fmt::arg("settle", kSettleSteps), fmt::arg("loaded", kLoadedSteps),
+                   fmt::arg("wake", wake_keywords(mode)));
+  return s;
+}
+
+// The idle count (f_ff[1]) on the thermo line of the run's last step (step atoms f_ff[1] f_ff[2]); -1 if none.
+double last_idle_count(const std::string& screen) {
+  std::istringstream lines(screen);
+  double idle = -1;
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream row(line);
+    double step = 0, atoms = 0, count = 0, changed = 0;
+    if (row >> step >> atoms >> count >> changed && step == kSettleSteps + kLoadedSteps) idle = count;
+  }
+  return idle;
+}
+}  // namespace
+
+TEST(LiggghtsFarfield, WakeNeighbourSpeedLeavesALoadedBedAtRestIdle) {
+  for (Chain mode : {Chain::WakeNeighbour, Chain::Wake}) {
+    const bool by_neighbour = mode == Chain::WakeNeighbour;
+    const auto dir = fresh_dir(by_neighbour ? "farfield_loaded_neighbour" : "farfield_loaded_force");
+    ASSERT_EQ(run_liggghts(dir, loaded_chain_scene(mode)), 0) << read_text(dir / "screen_in.lmp.txt");
+    const auto settled = read_dump(dir / fmt::format("dump.{}.txt", kSettleSteps));
+    const auto end = read_dump(dir / fmt::format("dump.{}.txt", kSettleSteps + kLoadedSteps));
+    ASSERT_EQ(end.size(), static_cast<std::size_t>(kChain));
+    // settled: pressed together (each contact overlaps) and at rest
+    EXPECT_LT(settled.at(kChain).x - settled.at(1).x, kD * (kChain - 1) - 1e-6);
+    for (const auto& [id, a] : settled) EXPECT_LT(std::abs(a.vx), 1e-4) << "atom " << id;
+    const double idle = last_idle_count(read_text(dir / "screen_in.lmp.txt"));
+    if (by_neighbour) {
+      EXPECT_EQ(idle, kChain - 2);
+      for (int id = 3; id <= kChain; ++id)
+        EXPECT_DOUBLE_EQ(end.at(id).x, settled.at(id).x) << "idle atom " << id << " moved";
+    } else {
+      EXPECT_EQ(idle, 0) << "the force rule wakes the resting chain through its contacts";
+    }
   }
 }
 

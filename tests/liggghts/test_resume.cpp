@@ -404,7 +404,7 @@ TEST(LiggghtsResume, KilledRunResumesToTheSameResult) {
   fs::remove_all(dir);
 }
 
-TEST(LiggghtsRunner, FarfieldSceneWakesPushedIceUnlessTheWindowAloneIsAsked) {
+TEST(LiggghtsRunner, FarfieldSceneWakesPushedIceByTheCasesRuleUnlessTheWindowAloneIsAsked) {
   const fs::path dir = brash::test::fresh_dir("farfield_scene");
   const auto prepare = [&](const std::string& speedups, const std::string& name) {
     write_small_case(dir / name, "[0.0, 0.6]", "0.01", speedups);
@@ -423,5 +423,9 @@ TEST(LiggghtsRunner, FarfieldSceneWakesPushedIceUnlessTheWindowAloneIsAsked) {
       prepare("speedups:\n  farfield: true\n  farfield_ahead_m: 0.3\n  farfield_wake_force_weight: 0\n", "window");
   EXPECT_NE(window.find("fix farfield all brash/farfield"), std::string::npos);
   EXPECT_EQ(window.find("wake_force"), std::string::npos);
+  const std::string neighbour = prepare(
+      "speedups:\n  farfield: true\n  farfield_ahead_m: 0.3\n  farfield_wake_by: neighbour_speed\n", "neighbour");
+  EXPECT_NE(neighbour.find(" wake_neighbour_speed 0.005 active active"), std::string::npos) << neighbour;
+  EXPECT_EQ(neighbour.find("wake_force"), std::string::npos);
   fs::remove_all(dir);
 }

@@ -21,7 +21,7 @@ using brash::core::Vec3;
 namespace {
 constexpr int kChain = 12;
 constexpr double kR = 0.01, kSpeed = 0.05, kSteps = 2000;  // 1 s at dt 5e-4 s
-enum class Cull { None, WindowAlone, Wake };
+enum class Cull { None, WindowAlone, Wake, WakeNeighbour };
 
 struct End {
   std::vector<Vec3> x;       // chain, then the lone sphere at rest, then the moving one
@@ -46,6 +46,7 @@ End run_chain(Cull mode) {
   k.cull = mode != Cull::None;
   k.cull_ahead_m = 0.035;
   if (mode == Cull::Wake) k.wake_force_N = 1e-4, k.wake_speed_m_s = 0.001;
+  if (mode == Cull::WakeNeighbour) k.wake_by = brash::WakeBy::NeighbourSpeed, k.wake_speed_m_s = 0.001;
   World w(brash::core::FluidParams{}, StepperSettings{}, Frictions{}, k);
   const double z = kR - brash::core::analytic::height_for_fraction(kR, 0.9);  // floating
   for (int i = 0; i < kChain; ++i) w.add_sphere(Vec3(0.001 + kR + 2 * kR * i, 0, z), kR, 900);
@@ -77,8 +78,9 @@ TEST(OdeFarField, WindowAloneMakesAnImmovableWall) {
   EXPECT_EQ(e.woken, 0);
 }
 
-TEST(OdeFarField, WakeRuleLetsThePushTravel) {
-  const End e = run_chain(Cull::Wake), ref = run_chain(Cull::None), wall = run_chain(Cull::WindowAlone);
+namespace {
+void check_push_travels(Cull mode) {
+  const End e = run_chain(mode), ref = run_chain(Cull::None), wall = run_chain(Cull::WindowAlone);
   for (int i = 0; i < kChain; ++i) {
     const double moved_ref = ref.x[i].x() - x0(i), moved = e.x[i].x() - x0(i);
     EXPECT_GT(moved_ref, 0.045) << "sphere " << i;  // without the cull: pushed 0.049 m or more
@@ -95,3 +97,11 @@ TEST(OdeFarField, WakeRuleLetsThePushTravel) {
   EXPECT_GT(wall.mean_fx_N / ref.mean_fx_N, 1000);
   EXPECT_LT(e.mean_fx_N / wall.mean_fx_N, 0.01);
 }
+
+}  // namespace
+
+TEST(OdeFarField, WakeRuleLetsThePushTravel) { check_push_travels(Cull::Wake); }
+
+// By a neighbour's speed: a culled sphere wakes when the active sphere of one of its contacts moves faster
+// than 0.001 m/s after the step.
+TEST(OdeFarField, WakeByNeighbourSpeedLetsThePushTravel) { check_push_travels(Cull::WakeNeighbour); }

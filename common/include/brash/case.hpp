@@ -15,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "brash/far_field_options.hpp"
 #include "brash/fluid_options.hpp"
 
 namespace brash {
@@ -152,6 +153,8 @@ struct SpeedupSpec {
                                         // an immovable wall; docs/performance.md)
   double farfield_wake_speed_m_s = 0.005;  // with the wake: behind the stern (and at a run's start) a piece is idle
                                         // once slower than this
+  WakeBy farfield_wake_by = WakeBy::Force;  // what wakes an idle piece: force (the force weight above) or
+                                        // neighbour_speed (a touching active piece faster than the wake speed)
   bool symmetry_y = false;              // half channel y >= 0, frictionless wall at y = 0, forces x 2
   double neighbor_skin_d = 0.2;         // neighbour-list skin in mean sphere diameters
   double early_stop_rel_ci = 0;         // stop once the 95 % CI of the window mean is below this fraction of
@@ -160,6 +163,12 @@ struct SpeedupSpec {
                                         // the CI alone, for records known to be stationary
   bool operator==(const SpeedupSpec&) const = default;
 };
+
+// The far field with no wake rule: idle ice is an immovable wall to the pushed bed (biased high).
+inline bool farfield_window_alone(const SpeedupSpec& s) {
+  return s.farfield && (s.farfield_wake_by == WakeBy::Force ? !(s.farfield_wake_force_weight > 0)
+                                                             : !(s.farfield_wake_speed_m_s > 0));
+}
 
 // Run-time guards (docs/stability.md, "Run-time guards"): what stops a run that is going wrong. The other
 // guard limits (domain box, zmax, kinetic energy, dt vs contact stiffness) follow from the case itself.

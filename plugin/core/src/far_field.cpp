@@ -21,7 +21,11 @@ double wake_force_N(double weight_fraction, double mean_diameter_m, double ice_d
 }
 
 bool wakes(const WakeRule& rule, double fx_N, double fy_N) {
-  return rule.enabled() && fx_N * fx_N + fy_N * fy_N > rule.force_N * rule.force_N;
+  return rule.by == WakeBy::Force && rule.enabled() && fx_N * fx_N + fy_N * fy_N > rule.force_N * rule.force_N;
+}
+
+bool wakes_by_neighbour(const WakeRule& rule, const Vec3& v) {
+  return rule.by == WakeBy::NeighbourSpeed && rule.enabled() && v.squaredNorm() > rule.speed_m_s * rule.speed_m_s;
 }
 
 bool idle_after_update(const WakeRule& rule, FarFieldZone zone, bool was_idle, bool first_update,

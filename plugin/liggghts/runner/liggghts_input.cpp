@@ -175,16 +175,21 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
   s += wall_lines(c, sp.symmetry_y, c.channel.ends == ChannelEnds::Walls);
   s += fmt::format("fix mv all move/mesh mesh hull linear {:.9g} 0 0\n", c.ship.speed_m_s);
   if (sp.farfield) {
-    // the wake force: a fraction of the mean piece's weight (docs/performance.md, "far field")
-    const double wake_force_N = core::wake_force_N(sp.farfield_wake_force_weight, c.ice.diameter_mean_m,
-                                                   c.ice.density_kg_m3, c.water.gravity_m_s2);
+    // the wake rule (docs/performance.md, "far field"): by force, a fraction of the mean piece's weight; or by
+    // the speed of a touching active piece
+    std::string wake;
+    if (sp.farfield_wake_by == WakeBy::NeighbourSpeed) {
+      wake = fmt::format(" wake_neighbour_speed {:.9g}", sp.farfield_wake_speed_m_s);
+    } else if (const double wake_force_N = core::wake_force_N(sp.farfield_wake_force_weight, c.ice.diameter_mean_m,
+                                                              c.ice.density_kg_m3, c.water.gravity_m_s2);
+               wake_force_N > 0) {
+      wake = fmt::format(" wake_force {:.9g} wake_speed {:.9g}", wake_force_N, sp.farfield_wake_speed_m_s);
+    }
     s += fmt::format(
         "fix farfield all brash/farfield every {} ahead {:.9g} behind {:.9g} hull_x0 {:.9g} speed {:.9g} "
         "bow_offset {:.9g} stern_offset {:.9g}{} active active idle idle\n",
         sp.farfield_every_steps, sp.farfield_ahead_m, sp.farfield_behind_m, hull_x0, c.ship.speed_m_s,
-        opt.hull_x_max_m, opt.hull_x_min_m,
-        wake_force_N > 0 ? fmt::format(" wake_force {:.9g} wake_speed {:.9g}", wake_force_N, sp.farfield_wake_speed_m_s)
-                         : std::string());
+        opt.hull_x_max_m, opt.hull_x_min_m, wake);
   }
   s += fmt::format("fix integr {} nve/sphere\n", moving);
   s += fmt::format("fix grav {} gravity {:.9g} vector 0 0 -1\n", moving, c.water.gravity_m_s2);

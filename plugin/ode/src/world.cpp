@@ -191,7 +191,7 @@ core::FarFieldWindow World::cull_window() const {
 }
 
 core::WakeRule World::wake_rule() const {
-  return skips_.cull ? core::WakeRule{skips_.wake_force_N, skips_.wake_speed_m_s} : core::WakeRule{};
+  return skips_.cull ? core::WakeRule{skips_.wake_force_N, skips_.wake_speed_m_s, skips_.wake_by} : core::WakeRule{};
 }
 
 void World::freeze(SphereRec& s) {
@@ -268,11 +268,22 @@ void World::update_cull_geoms(const core::FarFieldWindow& w) {
   stats_.geoms_out_max = std::max(stats_.geoms_out_max, geoms_out);
 }
 
-// The wake rule's force test (core::wakes) after the step: the horizontal force of the step's contacts on each
-// culled sphere, minus the force on the active side of each of its joints. A woken sphere is stepped from the
-// next step on.
+// The wake rule after the step, by force (core::wakes: the horizontal force of the step's contacts on each
+// culled sphere, minus the force on the active side of each of its joints) or by the speed of the active sphere
+// of each contact as it came into the step (core::wakes_by_neighbour). A woken sphere is stepped from the next step on.
 void World::wake_pushed() {
   const core::WakeRule rule = wake_rule();
+  if (rule.by == WakeBy::NeighbourSpeed) {
+    for (std::size_t k = 0; k < idle_fed_.size(); ++k) {
+      SphereRec& s = spheres_[idle_fed_[k]];
+      if (s.culled && core::wakes_by_neighbour(rule, idle_toucher_v_[k])) {
+        thaw(s);
+        ++stats_.woken;
+        cull_geoms_stale_ = true;
+      }
+    }
+    return;
+  }
   for (std::size_t k = 0; k < idle_fed_.size(); ++k) {
     SphereRec& s = spheres_[idle_fed_[k]];
     s.push_x_N -= idle_feedback_[k].f1[0];
@@ -529,9 +540,13 @@ void World::create_joints() {
       hull_feedback_.emplace_back();
       dJointSetFeedback(j, &hull_feedback_.back());
     } else if (p.idle != kNoSphere) {
-      idle_feedback_.emplace_back();
-      dJointSetFeedback(j, &idle_feedback_.back());
+      if (skips_.wake_by == WakeBy::Force) {
+        idle_feedback_.emplace_back();
+        dJointSetFeedback(j, &idle_feedback_.back());
+      }
       idle_fed_.push_back(p.idle);
+      const dReal* v = dBodyGetLinearVel(p.ba);  // before the step
+      idle_toucher_v_.emplace_back(v[0], v[1], v[2]);
     }
   }
   pending_.clear();
@@ -548,6 +563,7 @@ void World::step() {
   hull_feedback_.clear();
   idle_feedback_.clear();
   idle_fed_.clear();
+  idle_toucher_v_.clear();
   contacts_this_step_ = 0;
   pending_.clear();
   if (stepper_.broad_phase == BroadPhase::Sap) dSpaceCollide(space_, this, &World::near_callback);

@@ -50,8 +50,9 @@ std::string our_ice(const Column& col) {
 std::string our_far_field(const Column& col) {
   if (col.ode()) return col.ode_options().value("cull", false) ? "culled (window alone: biased high)" : "every piece integrated";
   if (!col.c->speedups.farfield) return "every piece integrated";
-  return col.c->speedups.farfield_wake_force_weight > 0 ? "far field with the wake rule"
-                                                         : "far field, window alone (biased high)";
+  if (farfield_window_alone(col.c->speedups)) return "far field, window alone (biased high)";
+  return col.c->speedups.farfield_wake_by == WakeBy::Force ? "far field with the wake rule"
+                                                           : "far field, woken by a neighbour's speed";
 }
 
 std::string our_channel(const Column& col) {

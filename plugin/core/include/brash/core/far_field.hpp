@@ -6,9 +6,11 @@
 // behind the stern is outside it; brash-ode can also bound it across the channel (beside the hull).
 // The window alone is not enough when the ship's push travels further than `ahead` through the ice: the idle
 // ice is then a wall that jams the pushed bed (+8 to +20 % mean resistance in paired ensembles). The wake
-// rule (wake force F > 0) lets the push through:
-//   - an idle piece wakes as soon as the horizontal force on it (from active neighbours: idle pieces get no
-//     gravity or fluid force) exceeds F;
+// rule lets the push through:
+//   - by force (F > 0): an idle piece wakes as soon as the horizontal force on it (from active neighbours:
+//     idle pieces get no gravity or fluid force) exceeds F;
+//   - by neighbour speed (V > 0): an idle piece wakes as soon as an active piece touching it moves faster
+//     than V (a resting bed stays idle, where the force rule wakes it through its resting contacts);
 //   - at a membership update a piece inside the window is active; ahead of the bow a piece keeps its state
 //     (one the push has reached stays active: re-freezing slow pieces of a loaded bed would jam it again);
 //     behind the stern, beside the hull and at a run's first update a piece is idle once no faster than V.
@@ -16,6 +18,7 @@
 #include <limits>
 
 #include "brash/core/params.hpp"
+#include "brash/far_field_options.hpp"
 
 namespace brash::core {
 
@@ -39,9 +42,11 @@ enum class FarFieldZone { Inside, Ahead, Behind, Beside };
 FarFieldZone far_field_zone(const FarFieldWindow& w, double x_m, double y_m);
 
 struct WakeRule {
-  double force_N = 0;    // wake when the horizontal force exceeds this; 0: never (the window alone)
-  double speed_m_s = 0;  // where the speed decides (see above): idle once |v| <= this
-  bool enabled() const { return force_N > 0; }
+  double force_N = 0;    // by force: wake when the horizontal force exceeds this; 0: never (the window alone)
+  double speed_m_s = 0;  // where the speed decides (see above): idle once |v| <= this; by neighbour speed
+                         // also: wake when a touching active piece is faster than this (0: never)
+  WakeBy by = WakeBy::Force;
+  bool enabled() const { return by == WakeBy::Force ? force_N > 0 : speed_m_s > 0; }
 };
 
 // The case file's form (speedups.farfield_wake_force_weight): a fraction of the weight of a piece of the
@@ -49,8 +54,18 @@ struct WakeRule {
 double wake_force_N(double weight_fraction, double mean_diameter_m, double ice_density_kg_m3,
                     double gravity_m_s2);
 
-// Does an idle piece with this horizontal force on it wake now? (|F_h| > F, never with the rule off)
+// Does an idle piece with this horizontal force on it wake now? (by force: |F_h| > F; never otherwise)
 bool wakes(const WakeRule& rule, double fx_N, double fy_N);
+
+// Does an idle piece touching a piece with this velocity wake now? (by neighbour speed: |v| > V; never
+// otherwise). An idle neighbour has v = 0, so the caller need not know whether the neighbour is active.
+bool wakes_by_neighbour(const WakeRule& rule, const Vec3& neighbour_velocity_m_s);
+
+// Do two spheres touch (centre distance below the sum of the radii)?
+constexpr bool touching(double dx_m, double dy_m, double dz_m, double r1_m, double r2_m) {
+  const double reach = r1_m + r2_m;
+  return dx_m * dx_m + dy_m * dy_m + dz_m * dz_m < reach * reach;
+}
 
 // Membership at an update: is the piece idle afterwards? `first_update`: the run's first (fix brash/farfield
 // also counts a resumed run's first; brash-ode restores the idle set exactly from its restart file).

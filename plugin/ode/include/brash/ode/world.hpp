@@ -92,12 +92,15 @@ struct Skips {
   double cull_side_m = 1e9;             // window: up to |y| of the hull's half beam + this
   int cull_every = 20;                  // membership update every n steps
   // The wake rule: a culled sphere wakes when the horizontal force of the step's contacts on it exceeds
-  // wake_force_N (read from the joints' feedback after the step); at an update a sphere ahead of the bow keeps
+  // wake_force_N (read from the joints' feedback after the step), or (wake_by NeighbourSpeed) when an active
+  // sphere in contact with it moved faster than wake_speed_m_s into the step (before it: the hard contact with a
+  // culled sphere stops it within the step); at an update a sphere ahead of the bow keeps
   // its state, one behind the stern, beside the hull or at the first update is culled once no faster than
   // wake_speed_m_s. wake_force_N = 0: the window alone (the culled ice is an immovable wall that jams the
   // pushed bed, docs/performance.md). brash-ode sets both from the case's speedups.farfield_wake_*.
   double wake_force_N = 0;
   double wake_speed_m_s = 0;
+  WakeBy wake_by = WakeBy::Force;
   // Culled spheres more than 3 largest diameters inside the frozen zone also leave collision detection
   // (dGeomDisable): they can touch only other culled spheres, which give no contact, so the contacts and the
   // trajectory are the same (test_ode_restart: CullGeomsGiveTheSameRun), but the broad phase then costs the
@@ -242,10 +245,12 @@ class World {
   std::vector<dTriIndex> hull_triangles_;
   std::array<double, 3> hull_min_{0, 0, 0}, hull_max_{0, 0, 0};
   std::deque<dJointFeedback> hull_feedback_;
-  // Wake rule: the feedback of this step's joints between an active sphere and a culled one, and the culled
-  // sphere of each; after a wake, the culled geoms near the woken spheres go back into collision detection.
+  // Wake rule: the feedback of this step's joints between an active sphere and a culled one (by force), the
+  // culled sphere of each and the active sphere's velocity before the step (by neighbour speed); after a wake,
+  // the culled geoms near the woken spheres go back into collision detection.
   std::deque<dJointFeedback> idle_feedback_;
   std::vector<std::size_t> idle_fed_;
+  std::vector<Vec3> idle_toucher_v_;
   bool cull_geoms_stale_ = false;
   std::vector<dContact> contact_buf_;
   // Contacts of one step, created as joints in a fixed order (sphere index, partner) after the collision
