@@ -24,6 +24,7 @@ work="$(mktemp -d /tmp/brash-paperbench-XXXX)"
 trap 'rm -rf "$work"' EXIT
 cp "$restart" "$work/start.restart"
 cp "$run_dir"/hull*.stl "$work/"
+[ ! -f "$run_dir/hull_flow.bin" ] || cp "$run_dir/hull_flow.bin" "$work/"  # the hull flow's table (fluid.hull_flow)
 strip() {  # in.lmp -> the same scene from start.restart, without outputs, for $steps steps
   sed -e 's|^read_data packing.data|read_restart start.restart|' -e '/^fix hf /d' -e '/^dump/d' -e '/^restart /d' \
       -e '/^write_restart/d' -e "s/^run .*/run $steps/" "$1"
@@ -48,6 +49,7 @@ cd "$work"
 loop() {  # $1 input, $2 ranks -> loop time [s]
   if [ "$2" = 1 ]; then "$bin/brash-liggghts" -in "$1" -log "log_$1_$2.txt" > /dev/null 2>&1
   else mpirun --allow-run-as-root --oversubscribe -np "$2" "$bin/brash-liggghts" -in "$1" -log "log_$1_$2.txt" > /dev/null 2>&1; fi
+  grep -q '^Loop time of' "log_$1_$2.txt" || { echo "paper_scene: $1 on $2 rank(s) did not run:" >&2; tail -5 "log_$1_$2.txt" >&2; exit 1; }
   awk '/^Loop time of/ {print $4; exit}' "log_$1_$2.txt"
 }
 label="far field on, "; [ "$has_ff" = 1 ] || label="run's scene,  "

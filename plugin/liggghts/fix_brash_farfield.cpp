@@ -140,9 +140,11 @@ void FixBrashFarfield::setup_pre_exchange() {
   next_reneighbor = next_update_;
 }
 
-// Called only on re-neighbour steps (before exchange and borders): updates the membership when a period has
-// passed. The forced re-neighbour at next_reneighbor makes the update happen no later than every N steps.
+// Called only on re-neighbour steps (before exchange and borders): wakes the pieces the neighbour-speed rule
+// marked, then updates the membership when a period has passed. The forced re-neighbour at next_reneighbor makes
+// the update happen no later than every N steps.
 void FixBrashFarfield::pre_exchange() {
+  wake_marked_pieces();
   if (update->ntimestep >= next_update_) {
     update_membership(false);
     next_update_ = update->ntimestep + every_;
@@ -150,23 +152,35 @@ void FixBrashFarfield::pre_exchange() {
   next_reneighbor = next_update_;
 }
 
-// An idle piece pushed beyond F (horizontal force: active neighbours and walls) wakes now: integrated from the
-// next step on. An idle piece touched by a piece faster than V (PRE_FORCE) wakes now: from this step's second
-// half-step on (it starts from rest at the half step). Its pairs with idle neighbours enter the neighbour list at
-// the next build, forced within kWakeBuildSteps (ghost copies get the new mask then too); every rank takes the
-// same decision (Allreduce).
-void FixBrashFarfield::end_of_step() { after_wake(wake_pushed_pieces()); }
+// By force: an idle piece pushed beyond F (horizontal force: active neighbours and walls) wakes now, integrated
+// from the next step on; its pairs with idle neighbours enter the neighbour list at the next build, forced within
+// kWakeBuildSteps (ghost copies get the new mask then too).
+// By neighbour speed: an idle piece touched by a piece faster than V (PRE_FORCE) is marked and wakes at the next
+// build (PRE_EXCHANGE), forced within kWakeBuildSteps, so that the same build lists its pairs with its idle
+// neighbours: a piece of a resting bed woken without them would fall or drift within a few steps and wake its
+// neighbours in turn. Until then it is an immovable neighbour, as before.
+// Every rank takes the same decision on the build (Allreduce).
+void FixBrashFarfield::end_of_step() { request_build(wake_pushed_pieces()); }
 
-void FixBrashFarfield::pre_force(int) { after_wake(wake_touched_by_fast_pieces()); }
+void FixBrashFarfield::pre_force(int) { request_build(mark_touched_by_fast_pieces()); }
 
-void FixBrashFarfield::after_wake(int woke) {
+void FixBrashFarfield::request_build(int any_local) {
   int any = 0;
-  MPI_Allreduce(&woke, &any, 1, MPI_INT, MPI_MAX, world);
+  MPI_Allreduce(&any_local, &any, 1, MPI_INT, MPI_MAX, world);
   if (any) {
     const bigint step = update->ntimestep;
     const bigint soon = std::max(step + 1, neighbor->lastcall + kWakeBuildSteps);
     next_reneighbor = std::min(next_reneighbor, soon);
   }
+}
+
+void FixBrashFarfield::wake_marked_pieces() {
+  if (marked_.empty()) return;
+  int* mask = atom->mask;
+  const int n = std::min(atom->nlocal, static_cast<int>(marked_.size()));
+  for (int i = 0; i < n; i++)
+    if (marked_[i] && (mask[i] & idle_bit_)) mask[i] = (mask[i] | active_bit_) & ~idle_bit_;
+  marked_.assign(marked_.size(), 0);
 }
 
 int FixBrashFarfield::wake_pushed_pieces() {
@@ -184,37 +198,38 @@ int FixBrashFarfield::wake_pushed_pieces() {
 }
 
 // The pair style's half list (newton off: a pair with a ghost is listed on both ranks, so each local piece sees
-// all its neighbours here; idle-idle pairs are excluded, and an idle piece has v = 0). A piece woken in this
-// pass has v = 0 and wakes no one before the next step.
-int FixBrashFarfield::wake_touched_by_fast_pieces() {
+// all its neighbours here; idle-idle pairs are excluded, and an idle piece has v = 0). Local indices hold until
+// the next build's PRE_EXCHANGE, where the marks are used (atoms migrate and are sorted only after it).
+int FixBrashFarfield::mark_touched_by_fast_pieces() {
   const NeighList* list = force->pair->list;
   double** x = atom->x;
   double** v = atom->v;
   const double* radius = atom->radius;
-  int* mask = atom->mask;
+  const int* mask = atom->mask;
   const int nlocal = atom->nlocal;
+  if (static_cast<int>(marked_.size()) < nlocal) marked_.resize(atom->nmax, 0);
   const brash::core::WakeRule rule = wake_rule();
-  auto wake_if_touched = [&](int idle, int other) {
-    if (!(mask[idle] & idle_bit_)) return false;
+  auto mark_if_touched = [&](int idle, int other) {
+    if (!(mask[idle] & idle_bit_) || marked_[idle]) return false;
     if (!brash::core::wakes_by_neighbour(rule, brash::core::Vec3(v[other][0], v[other][1], v[other][2])))
       return false;
     if (!brash::core::touching(x[idle][0] - x[other][0], x[idle][1] - x[other][1], x[idle][2] - x[other][2],
                                radius[idle], radius[other]))
       return false;
-    mask[idle] = (mask[idle] | active_bit_) & ~idle_bit_;
+    marked_[idle] = 1;
     return true;
   };
-  int woke = 0;
+  int marked = 0;
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     const int* jlist = list->firstneigh[i];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
-      if (wake_if_touched(i, j)) woke = 1;
-      if (j < nlocal && wake_if_touched(j, i)) woke = 1;
+      if (mark_if_touched(i, j)) marked = 1;
+      if (j < nlocal && mark_if_touched(j, i)) marked = 1;
     }
   }
-  return woke;
+  return marked;
 }
 
 void FixBrashFarfield::update_membership(bool setup) {

@@ -22,11 +22,12 @@
    of a loaded bed would jam it again); behind the stern a piece goes idle once slower than V. At setup (new or
    resumed run) a piece outside the window is idle when slower than V.
 
-   wake_neighbour_speed V (m/s): instead of the force, an idle piece wakes as soon as a piece touching it moves
-   faster than V (the pair style's neighbour list: active-idle pairs; an idle piece has v = 0); V is also the
-   speed of the membership rule above. The force rule wakes a bed at rest through its resting contacts (an idle
-   piece's idle-idle contacts are not computed, so one next to active pieces feels an unbalanced force); this
-   rule leaves a resting bed idle and wakes the ice the push moves. The idle ice is then the ice the
+   wake_neighbour_speed V (m/s): instead of the force, an idle piece touched by a piece faster than V (the pair
+   style's neighbour list: active-idle pairs; an idle piece has v = 0) wakes at the next neighbour build, forced
+   within 10 steps, which then lists its pairs with its idle neighbours; V is also the speed of the membership
+   rule above. The force rule wakes a bed at rest through its resting contacts (an idle piece's idle-idle contacts
+   are not computed, so one next to active pieces feels an unbalanced force); this rule leaves a resting bed idle
+   and wakes the ice the push moves. The idle ice is then the ice the
    disturbance has not reached (tests/liggghts/test_farfield.cpp: a pushed chain moves as without the fix).
    The window, the wake test and the membership rule are brash::core's (brash/core/far_field.hpp), the same
    that brash-ode --cull applies; this fix adds the LIGGGHTS side (groups, masks, neighbour builds, ranks).
@@ -40,6 +41,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "brash/core/far_field.hpp"
 #include "fix.h"
@@ -61,8 +63,9 @@ class FixBrashFarfield : public LAMMPS_NS::Fix {
  private:
   void update_membership(bool setup);
   int wake_pushed_pieces();
-  int wake_touched_by_fast_pieces();
-  void after_wake(int woke);
+  int mark_touched_by_fast_pieces();
+  void wake_marked_pieces();
+  void request_build(int any_local);
   brash::core::WakeRule wake_rule() const {
     return {wake_force_, wake_speed_, by_neighbour_ ? brash::WakeBy::NeighbourSpeed : brash::WakeBy::Force};
   }
@@ -80,6 +83,7 @@ class FixBrashFarfield : public LAMMPS_NS::Fix {
   double wake_force_ = 0;           // N; 0: idle pieces never wake by force
   bool have_wake_force_ = false;
   bool by_neighbour_ = false;       // wake_neighbour_speed: wake_speed_ is the speed that wakes
+  std::vector<char> marked_;        // by local index: to wake at the next build (neighbour speed)
   double n_idle_ = 0, n_changed_ = 0;
 };
 
