@@ -136,6 +136,9 @@ TEST(LiggghtsGuardRunner, SettledBedIsMadeOnceCachedAndStartedFrom) {
   ASSERT_TRUE(std::regex_search(bed, m, std::regex("vrms_m_s=([0-9.eE+-]+)"))) << bed.substr(0, 300);
   EXPECT_LT(std::stod(m[1].str()), 1e-3);
   EXPECT_NE(brash::test::read_text(dir / "run.log").find("settling the packing"), std::string::npos);
+  // the settling reports each chunk's model time and rms speed while it goes
+  EXPECT_NE(brash::test::read_text(dir / "run.log").find("[brash-settle] t = 0.05 s, rms speed"), std::string::npos)
+      << brash::test::read_text(dir / "run.log");
   // the run starts from it: its scene's pieces are the settled ones, not the packing's
   const std::string data = brash::test::read_text(dir / "run/packing.data");
   std::smatch first;

@@ -266,6 +266,7 @@ std::string settle_script(const Case& c, const Box& box, long chunk_steps, long 
   s += "compute k all ke\nvariable vrms equal sqrt(2*c_k/mass(all))\nvariable t equal step*dt\n";
   s += fmt::format("thermo_style custom step v_t atoms c_k v_vrms\nthermo {}\nthermo_modify norm no\n", chunk_steps);
   s += fmt::format("variable chunk loop {}\nlabel next_chunk\nrun {}\n", max_chunks, chunk_steps);
+  s += "print \"brash-settle progress: t ${t} vrms ${vrms}\"\n";
   s += fmt::format("if \"${{vrms}} < {:.9g}\" then \"jump SELF settled\"\n", c.ice.settle_speed_m_s);
   s += "next chunk\njump SELF next_chunk\nlabel settled\n";
   s += "print \"brash-settle: t ${t} vrms ${vrms}\"\n";

@@ -4,10 +4,16 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <sys/wait.h>
+
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "brash/case.hpp"
 #include "brash/error.hpp"
@@ -22,6 +28,33 @@ namespace fs = std::filesystem;
 using namespace brash;
 
 namespace {
+
+// Runs the settling deck in `work`, its screen output into work/screen.txt, and reports each chunk's model time
+// and rms speed on stderr (a paper-size bed takes tens of minutes). Returns LIGGGHTS' exit code and its output.
+std::pair<int, std::string> run_settling(const fs::path& work, double target_m_s) {
+  const std::string cmd = "cd " + run::shell_quote(work) + " && " +
+                          run::shell_quote(run::executable_dir() / "brash-liggghts") + " -in in.lmp -log log.txt 2>&1";
+  FILE* pipe = ::popen(cmd.c_str(), "r");
+  if (!pipe) throw std::runtime_error("cannot start " + cmd);
+  std::ofstream screen_file(work / "screen.txt");
+  std::string screen;
+  const std::string tag = "brash-settle progress: t ";
+  char buf[4096];
+  while (std::fgets(buf, sizeof buf, pipe)) {
+    const std::string line = buf;
+    screen += line;
+    screen_file << line << std::flush;
+    if (line.rfind(tag, 0) != 0) continue;
+    double t = 0, vrms = 0;
+    std::string word;
+    std::istringstream in(line.substr(tag.size()));
+    if (in >> t >> word >> vrms)
+      std::cerr << fmt::format("[brash-settle] t = {:.2f} s, rms speed {:.3g} m/s (settled below {:g})\n", t, vrms,
+                               target_m_s);
+  }
+  const int rc = ::pclose(pipe);
+  return {WIFEXITED(rc) ? WEXITSTATUS(rc) : 128, screen};
+}
 
 // "brash-settle: t 1.2 vrms 0.00093" from LIGGGHTS' screen output: {t, vrms}; throws if absent.
 std::pair<double, double> settle_result(const std::string& screen, const fs::path& log) {
@@ -74,11 +107,7 @@ int settle(const fs::path& case_file, const fs::path& out, double max_s) {
   run::write_atomic(work / "in.lmp", liggghts::settle_script(c, box, chunk_steps, max_chunks));
   std::cerr << fmt::format("[brash-settle] {} pieces, at most {} s of model time, until the rms speed < {} m/s\n",
                            spheres.size(), max_s, c.ice.settle_speed_m_s);
-  const int rc = run::run_shell("cd " + run::shell_quote(work) + " && " +
-                                run::shell_quote(run::executable_dir() / "brash-liggghts") +
-                                " -in in.lmp -log log.txt > screen.txt 2>&1");
-  std::ifstream screen_in(work / "screen.txt");
-  const std::string screen{std::istreambuf_iterator<char>(screen_in), {}};
+  const auto [rc, screen] = run_settling(work, c.ice.settle_speed_m_s);
   if (rc != 0)
     throw InputError(fmt::format("{}: LIGGGHTS failed (exit {}) while settling; its output: {}", case_file.string(), rc,
                                  (work / "screen.txt").string()));
