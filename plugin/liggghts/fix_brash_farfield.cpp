@@ -134,7 +134,9 @@ void FixBrashFarfield::init() {
 }
 
 // Before the first neighbour build of a run: membership for the current position of the hull (speed test only).
+// Marks left by the previous run's last steps are used first, while their local indices still hold.
 void FixBrashFarfield::setup_pre_exchange() {
+  wake_marked_pieces();
   update_membership(true);
   next_update_ = update->ntimestep + every_;
   next_reneighbor = next_update_;
