@@ -13,7 +13,7 @@ cd "$root" || exit 2
 # header (as included) -> the component that owns it
 owner() {
   case $1 in
-    brash/core/*|brash/error.hpp|brash/fluid_options.hpp|brash/paths.hpp) echo core ;;
+    brash/core/*|brash/error.hpp|brash/fluid_options.hpp|brash/far_field_options.hpp|brash/paths.hpp) echo core ;;
     brash/stats/*) echo stats ;;
     brash/hull/*|brash/fsicr_params.hpp) echo geometry ;;
     brash/post/*) echo postproc ;;
