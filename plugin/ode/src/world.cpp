@@ -191,7 +191,7 @@ core::FarFieldWindow World::cull_window() const {
 }
 
 core::WakeRule World::wake_rule() const {
-  return skips_.cull ? core::WakeRule{skips_.wake_force_N, skips_.wake_speed_m_s, skips_.wake_by} : core::WakeRule{};
+  return skips_.cull ? skips_.wake_rule() : core::WakeRule{};
 }
 
 void World::freeze(SphereRec& s) {
@@ -268,19 +268,22 @@ void World::update_cull_geoms(const core::FarFieldWindow& w) {
   stats_.geoms_out_max = std::max(stats_.geoms_out_max, geoms_out);
 }
 
+void World::wake(SphereRec& s) {
+  thaw(s);
+  ++stats_.woken;
+  cull_geoms_stale_ = true;
+}
+
 // The wake rule after the step, by force (core::wakes: the horizontal force of the step's contacts on each
-// culled sphere, minus the force on the active side of each of its joints) or by the speed of the active sphere
-// of each contact as it came into the step (core::wakes_by_neighbour). A woken sphere is stepped from the next step on.
+// culled sphere, minus the force on the active side of each of its joints) or by the speed of the active
+// sphere of each contact as it came into the step (core::wakes_by_neighbour). A woken sphere is stepped from
+// the next step on.
 void World::wake_pushed() {
   const core::WakeRule rule = wake_rule();
   if (rule.by == WakeBy::NeighbourSpeed) {
     for (std::size_t k = 0; k < idle_fed_.size(); ++k) {
       SphereRec& s = spheres_[idle_fed_[k]];
-      if (s.culled && core::wakes_by_neighbour(rule, idle_toucher_v_[k])) {
-        thaw(s);
-        ++stats_.woken;
-        cull_geoms_stale_ = true;
-      }
+      if (s.culled && core::wakes_by_neighbour(rule, idle_toucher_v_[k])) wake(s);
     }
     return;
   }
@@ -291,11 +294,7 @@ void World::wake_pushed() {
   }
   for (std::size_t i : idle_fed_) {
     SphereRec& s = spheres_[i];
-    if (s.culled && core::wakes(rule, s.push_x_N, s.push_y_N)) {
-      thaw(s);
-      ++stats_.woken;
-      cull_geoms_stale_ = true;
-    }
+    if (s.culled && core::wakes(rule, s.push_x_N, s.push_y_N)) wake(s);
     s.push_x_N = s.push_y_N = 0;
   }
 }
@@ -540,13 +539,14 @@ void World::create_joints() {
       hull_feedback_.emplace_back();
       dJointSetFeedback(j, &hull_feedback_.back());
     } else if (p.idle != kNoSphere) {
+      idle_fed_.push_back(p.idle);
       if (skips_.wake_by == WakeBy::Force) {
         idle_feedback_.emplace_back();
         dJointSetFeedback(j, &idle_feedback_.back());
+      } else {
+        const dReal* v = dBodyGetLinearVel(p.ba);  // before the step
+        idle_toucher_v_.emplace_back(v[0], v[1], v[2]);
       }
-      idle_fed_.push_back(p.idle);
-      const dReal* v = dBodyGetLinearVel(p.ba);  // before the step
-      idle_toucher_v_.emplace_back(v[0], v[1], v[2]);
     }
   }
   pending_.clear();

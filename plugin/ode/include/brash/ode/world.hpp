@@ -101,6 +101,7 @@ struct Skips {
   double wake_force_N = 0;
   double wake_speed_m_s = 0;
   WakeBy wake_by = WakeBy::Force;
+  core::WakeRule wake_rule() const { return {wake_force_N, wake_speed_m_s, wake_by}; }
   // Culled spheres more than 3 largest diameters inside the frozen zone also leave collision detection
   // (dGeomDisable): they can touch only other culled spheres, which give no contact, so the contacts and the
   // trajectory are the same (test_ode_restart: CullGeomsGiveTheSameRun), but the broad phase then costs the
@@ -225,6 +226,7 @@ class World {
   void wake_pushed();
   static void freeze(SphereRec& s);
   static void thaw(SphereRec& s);
+  void wake(SphereRec& s);  // thaw a culled sphere by the wake rule
   void set_ode_mass(SphereRec& s, double M);
 
   core::FluidParams fluid_;
