@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -250,6 +251,39 @@ TEST_F(Restart, GridAndSapBroadPhasesGiveTheSameRun) {
   ASSERT_EQ(run(resume_cmd(r)), 0);
   EXPECT_NE(slurp(r / "meta.json").find("\"broad_phase\": \"sap\""), std::string::npos);
   EXPECT_LE(max_diff(s / "hull_force.csv", r / "hull_force.csv", 1, 4), 1e-6);
+}
+
+// --sphere-order packing adds the bodies in the packing file's order instead of the spatial one: the same
+// pieces under the same ids at the same places (the dumps list them in the bodies' order), a run that differs
+// from the spatial one only as far as the order of ODE's constraint rows changes its sums, and one that a resume
+// goes on with.
+TEST_F(Restart, PackingSphereOrderKeepsTheIdsAndResumesInItsOrder) {
+  const fs::path p = kRoot / "P", pr = kRoot / "PR";
+  ASSERT_EQ(run(base_cmd(p) + " --sphere-order packing > /dev/null"), 0);
+  EXPECT_NE(slurp(p / "meta.json").find("\"sphere_order\": \"packing\""), std::string::npos);
+  EXPECT_NE(slurp(kRoot / "A" / "meta.json").find("\"sphere_order\": \"spatial\""), std::string::npos);
+  auto a0 = read_csv(kRoot / "A" / "particles" / "particles_0.csv");
+  auto p0 = read_csv(p / "particles" / "particles_0.csv");
+  ASSERT_EQ(a0.size(), 720u);
+  ASSERT_EQ(p0.size(), a0.size());
+  EXPECT_NE(a0, p0);  // the bodies in another order
+  std::sort(a0.begin(), a0.end());  // by id
+  std::sort(p0.begin(), p0.end());
+  for (std::size_t i = 0; i < a0.size(); ++i) {
+    EXPECT_EQ(a0[i][0], double(i + 1)) << "row " << i;  // ids 1..720, each once
+    for (std::size_t c = 0; c < 5; ++c) EXPECT_EQ(a0[i][c], p0[i][c]) << "row " << i;  // the packing's piece
+  }
+  // the same physics: the bow's mean force over the run within 2 % of the spatial order's
+  double fa = 0, fp = 0;
+  for (const auto& r : read_csv(kRoot / "A" / "hull_force.csv")) fa += r[1];
+  for (const auto& r : read_csv(p / "hull_force.csv")) fp += r[1];
+  EXPECT_LT(fa, 0);
+  EXPECT_NEAR(fp / fa, 1.0, 0.02) << "mean Fx, packing order / spatial order";
+  ASSERT_EQ(run(base_cmd(pr) + " --sphere-order packing --crash-after-step 230"), 137);
+  ASSERT_EQ(run(resume_cmd(pr)), 0);
+  EXPECT_NE(slurp(pr / "meta.json").find("\"sphere_order\": \"packing\""), std::string::npos);
+  EXPECT_LE(max_diff(p / "hull_force.csv", pr / "hull_force.csv", 1, 4), 1e-6);
+  EXPECT_LE(max_diff(p / "particles" / "particles_400.csv", pr / "particles" / "particles_400.csv", 1, 4), 1e-9);
 }
 
 // speedups.early_stop_rel_ci in brash-ode: the smoke case with a row every 0.001 s (window [0.1, 0.2] s), run

@@ -30,6 +30,13 @@ inline void add_run_options(CLI::App& app, RunOptions& o, std::string& implicit_
       ->transform(CLI::CheckedTransformer(std::map<std::string, BroadPhase>{{to_string(BroadPhase::Grid), BroadPhase::Grid},
                                                                             {to_string(BroadPhase::Sap), BroadPhase::Sap}}))
       ->default_str(to_string(BroadPhase::Grid));
+  app.add_option("--sphere-order", o.sphere_order,
+                 "order of the ODE bodies: spatial (cells of two mean diameters) | packing (the packing "
+                 "file's; slower)")
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, SphereOrder>{{to_string(SphereOrder::Spatial), SphereOrder::Spatial},
+                                             {to_string(SphereOrder::Packing), SphereOrder::Packing}}))
+      ->default_str(to_string(SphereOrder::Spatial));
   app.add_flag("--auto-disable", o.skips.auto_disable, "skip: ODE auto-disable of resting spheres far from the hull");
   app.add_option("--disable-linear", o.skips.disable_linear_m_s, "auto-disable linear speed threshold [m/s]")
       ->capture_default_str();

@@ -9,6 +9,7 @@
 #include <csignal>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <numeric>
 #include <optional>
 #include <sstream>
 #include <unordered_map>
@@ -171,12 +172,17 @@ void Stepping::log(const std::string& line) {
 void Stepping::build_world() {
   w_ = std::make_unique<World>(fluid_params(c_), o_.stepper, Frictions{c_.friction.ice_ice, c_.friction.ice_hull, c_.friction.ice_wall},
                                cull_skips(o_, c_), o_.implicit_mode);
-  // in a spatial order (cells of two mean diameters): ODE's bodies, and its contact rows, then sit in memory as
-  // in space; ids in every output are the packing's (order_)
+  // by default in a spatial order (cells of two mean diameters): ODE's bodies, and its contact rows, then sit
+  // in memory as in space; ids in every output are the packing's (order_)
   std::vector<Vec3> centres;
   centres.reserve(s_.spheres.size());
   for (const auto& p : s_.spheres) centres.emplace_back(p.x_m, p.y_m, p.z_m);
-  order_ = core::spatial_order(centres, 2 * c_.ice.diameter_mean_m);
+  if (o_.sphere_order == SphereOrder::Spatial) {
+    order_ = core::spatial_order(centres, 2 * c_.ice.diameter_mean_m);
+  } else {
+    order_.resize(centres.size());
+    std::iota(order_.begin(), order_.end(), std::size_t{0});
+  }
   for (const std::size_t j : order_)
     w_->add_sphere(centres[j], 0.5 * s_.spheres[j].diameter_m, c_.ice.density_kg_m3);
   std::vector<double> verts;

@@ -38,6 +38,7 @@ nlohmann::json options_json(const RunOptions& o) {
           {"max_contacts_per_pair", st.max_contacts_per_pair},
           {"angular_damping", st.angular_damping},
           {"broad_phase", to_string(st.broad_phase)},
+          {"sphere_order", to_string(o.sphere_order)},
           {"auto_disable", k.auto_disable},
           {"disable_linear_m_s", k.disable_linear_m_s},
           {"disable_angular_rad_s", k.disable_angular_rad_s},
@@ -96,6 +97,9 @@ RunOptions options_from_meta(const fs::path& run_dir, const RunOptions& cli) {
     o.stepper.angular_damping = j.at("angular_damping");
     // Runs before the switch existed used sap; grid gives the same contacts (see world.hpp), so they go on with it.
     o.stepper.broad_phase = j.value("broad_phase", to_string(BroadPhase::Grid)) == to_string(BroadPhase::Sap) ? BroadPhase::Sap : BroadPhase::Grid;
+    // runs before the switch existed were all in the spatial order
+    o.sphere_order =
+        j.value("sphere_order", "spatial") == "packing" ? SphereOrder::Packing : SphereOrder::Spatial;
     o.skips.auto_disable = j.at("auto_disable");
     o.skips.disable_linear_m_s = j.at("disable_linear_m_s");
     o.skips.disable_angular_rad_s = j.at("disable_angular_rad_s");

@@ -13,6 +13,12 @@
 
 namespace brash::ode {
 
+// The order in which the packing's spheres become ODE bodies: spatial (cells of two mean diameters, the
+// default: bodies and contact rows sit in memory as in space) or the packing file's (random in space; kept to
+// measure the difference).
+enum class SphereOrder { Spatial, Packing };
+inline const char* to_string(SphereOrder o) { return o == SphereOrder::Packing ? "packing" : "spatial"; }
+
 struct RunOptions {
   std::filesystem::path case_dir;      // folder with case.yaml (or the case.yaml itself)
   std::filesystem::path out_dir;       // run directory; empty = <runs_root>/<case>-ode-<model>-<stamp>
@@ -26,6 +32,7 @@ struct RunOptions {
   double cull_wake_force_weight = -1;
   double cull_wake_speed_m_s = -1;
   ImplicitMode implicit_mode = ImplicitMode::EffectiveMass;
+  SphereOrder sphere_order = SphereOrder::Spatial;
   bool end_walls = false;              // --end-walls: the case with channel.ends: walls
   double settle_s = 0;                 // simulated settling with the hull parked at start_x (not in t)
   bool progress = true;                // the engine's own lines on stderr (the driver prints progress)
