@@ -2,7 +2,7 @@
 # Benchmark on the paper scene itself: 1,000 steps from a restart file of a paper-case run directory
 # (brash-liggghts-run cases/jbc_ia_5kn ...; needs restart/a.restart or b.restart), timed in one sitting:
 #   far field on, 2 ranks  |  far field on, 1 rank  (parallel efficiency)  |  far field off, 2 ranks (its speed-up);
-# a run without the far field (the paper case's default) is timed on 2 and 1 ranks, and with the far field switched
+# a run without the far field (speedups.farfield: false) is timed on 2 and 1 ranks, and with the far field switched
 # on (the run's case.yaml with speedups.farfield: true, i.e. its window, with each wake rule of WAKE_RULES, default
 # "force neighbour_speed" (speedups.farfield_wake_by); input written by brash-liggghts-run --prepare-only) on 2 ranks:
 # what the far field would save on this scene, at this time.
@@ -32,7 +32,7 @@ strip() {  # in.lmp -> the same scene from start.restart, without outputs, for $
 strip "$run_dir/in.lmp" > "$work/in_on.lmp"
 sed -e '/^fix farfield/d' -e 's/^group idle subtract all all/group idle delete/' \
     -e 's/^neigh_modify delay 0 exclude group idle idle/neigh_modify delay 0/' "$work/in_on.lmp" > "$work/in_off.lmp"
-# The far field is off in the paper case: then the run's own scene is measured on 1 and 2 ranks, and the same scene
+# A run without the far field: then the run's own scene is measured on 1 and 2 ranks, and the same scene
 # with the case's far field switched on, once per wake rule.
 has_ff=0; grep -q '^fix farfield' "$work/in_on.lmp" && has_ff=1
 wake_rules="${WAKE_RULES:-force neighbour_speed}"
