@@ -183,6 +183,16 @@ TEST_F(OdeGuard, KeysOnlyLiggghtsCarriesOutAreRefusedByName) {
     EXPECT_EQ(r.exit_code, 2) << c.name << ": " << r.err;
     EXPECT_NE(r.err.find(c.key), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("brash-liggghts-run"), std::string::npos) << r.err;
+    // and says how to run the case here
+    EXPECT_NE(r.err.find("brash-case derive"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(std::string("--set ") + std::string(c.key).substr(0, std::string(c.key).find(':')) + "=false"),
+              std::string::npos)
+        << r.err;
     EXPECT_FALSE(fs::exists(r.run / "meta.json")) << c.name;  // refused before any output
   }
+  // the paper case's switches together: one message names both and the one copy to run
+  const auto r =
+      run(make_case("refused_both", "\nice:\n", "\nspeedups:\n  farfield: true\nice:\n  settle: true\n", ""), "0.1");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--set ice.settle=false --set speedups.farfield=false --out DIR"), std::string::npos) << r.err;
 }

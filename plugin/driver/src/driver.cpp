@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstring>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <fstream>
 #include <iostream>
 #include <limits>
@@ -158,11 +159,14 @@ std::string options_problem(const DriverOptions& o) {
   return {};
 }
 
-// Case keys that only some engines carry out: refused by name on the others, before any output.
+// Case keys that only some engines carry out: refused by name on the others, before any output; one message names
+// every such key and the copy of the case that this engine runs.
 void refuse_what_the_engine_cannot_run(const Case& c, const fs::path& case_file, const Engine& engine) {
+  std::vector<std::string> reasons, sets;
   const auto refuse = [&](const std::string& key, const std::string& what, const std::string& instead) {
-    throw InputError(fmt::format("{}: {}: true: {} is made on LIGGGHTS (brash-liggghts-run); {} {}", case_file.string(),
-                                 key, what, engine.runner(), instead));
+    reasons.push_back(fmt::format("{}: true: {} is made on LIGGGHTS (brash-liggghts-run); {} {}", key, what,
+                                  engine.runner(), instead));
+    sets.push_back(fmt::format(" --set {}=false", key));
   };
   if (c.ice.settle && !engine.starts_from_settled_bed())
     refuse("ice.settle", "the settled bed", "starts from the packing (ice.settle: false)");
@@ -170,6 +174,9 @@ void refuse_what_the_engine_cannot_run(const Case& c, const fs::path& case_file,
     refuse("speedups.symmetry_y", "the half channel", "runs the whole channel (speedups.symmetry_y: false)");
   if (c.speedups.farfield && !engine.idles_far_field())
     refuse("speedups.farfield", "the idle far field", "integrates every piece (speedups.farfield: false)");
+  if (reasons.empty()) return;
+  throw InputError(fmt::format("{}: {}. Run a copy made with `brash-case derive {}{} --out DIR`", case_file.string(),
+                               fmt::join(reasons, "; "), case_file.parent_path().string(), fmt::join(sets, "")));
 }
 
 }  // namespace
