@@ -1,6 +1,6 @@
 // A floating two-layer bed between walls, friction 1.35, at rest stays at rest for 10 s.
 // Scene: 12 x 10 lower + upper layer (~230 spheres, d 17.6 mm +-5 %), walls all round, model added_mass
-// (implicit, effective-mass realisation) + drag, dt 5e-4 s, 20 quickstep iterations, ERP 0.2, CFM 1e-5.
+// (implicit, effective-mass realisation) + drag, dt 5e-4 s, the default quickstep iterations (8), ERP 0.2, CFM 1e-5.
 // Prepared for 3 s with extra ODE velocity damping (World::set_damping), then 10 s of the plain model:
 // rms speed, mean/max centre displacement from the prepared state and the centroid drift are bounded.
 #include <gtest/gtest.h>

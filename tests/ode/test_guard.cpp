@@ -196,3 +196,16 @@ TEST_F(OdeGuard, KeysOnlyLiggghtsCarriesOutAreRefusedByName) {
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("--set ice.settle=false --set speedups.farfield=false --out DIR"), std::string::npos) << r.err;
 }
+
+// The progress line names the model time to the case's step (here 4 decimals), the wall time and the contacts:
+// bench/ode_paper_scene.sh reads seconds per step off these lines.
+TEST_F(OdeGuard, ProgressLineGivesTheModelTimeToTheStep) {
+  const fs::path dir = make_case("progress", "", "", "");
+  const fs::path out = dir.parent_path() / "run", err = dir.parent_path() / "stderr.txt";
+  const std::string cmd = std::string("'") + BRASH_ODE_EXE + "' '" + dir.string() + "' --out '" + out.string() +
+                          "' --duration 0.05 --no-post > /dev/null 2> '" + err.string() + "'";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  const std::string text = slurp(err);
+  const std::regex line(R"(t = 0\.[0-9]{4} / 0\.05 s \( *[0-9]+%\)  elapsed [0-9]+ s  ETA [0-9]+ s  Fx [-+0-9.]+ N  awake [0-9]+  contacts [0-9]+)");
+  EXPECT_TRUE(std::regex_search(text, line)) << text;
+}

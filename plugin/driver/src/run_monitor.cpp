@@ -1,5 +1,6 @@
 #include "run_monitor.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fmt/format.h>
@@ -122,8 +123,10 @@ void RunMonitor::print(double t_s, std::string_view detail) {
   last_print_s_ = elapsed;
   const double duration = case_.run.duration_s;
   const double eta = elapsed * (duration - t_s) / (t_s - t_first_s_);
-  std::fprintf(stderr, "%s%s t = %.2f / %.2f s (%3.0f%%)  elapsed %.0f s  ETA %.0f s%s%.*s%s", tty_ ? "\r" : "",
-               tag_.c_str(), t_s, duration, 100 * t_s / duration, elapsed, eta, detail.empty() ? "" : "  ",
+  // t to the case's step (at least 2 decimals): a benchmark reads seconds per step off these lines
+  const int t_digits = std::clamp(static_cast<int>(std::ceil(-std::log10(case_.run.timestep_s) - 1e-9)), 2, 6);
+  std::fprintf(stderr, "%s%s t = %.*f / %.2f s (%3.0f%%)  elapsed %.0f s  ETA %.0f s%s%.*s%s", tty_ ? "\r" : "",
+               tag_.c_str(), t_digits, t_s, duration, 100 * t_s / duration, elapsed, eta, detail.empty() ? "" : "  ",
                static_cast<int>(detail.size()), detail.data(), tty_ ? "   " : "\n");
 }
 
