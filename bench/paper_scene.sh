@@ -9,11 +9,15 @@
 # The run's own in.lmp is used with dumps, restart and force output removed; "off" drops fix brash/farfield,
 # deletes group idle and its neighbour exclusion (every piece integrated, every pair computed).
 # SKIP_1RANK=1 leaves out the 1-rank timing (the slowest).
-#   bash bench/paper_scene.sh RUN_DIR [STEPS]        (skipped with a message when RUN_DIR has no restart)
+#   bash bench/paper_scene.sh [RUN_DIR] [STEPS]      (skipped with a message when RUN_DIR has no restart; RUN_DIR
+#   defaults to the runs/paper-liggghts-* run with the newest restart file)
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 bin="${BRASH_BIN:-$here/build/bin}"
-run_dir="${1:-$here/runs/paper-liggghts-added_mass}"
+# default: the paper-case run in runs/ with the newest restart file
+newest="$(ls -t "$here"/runs/paper-liggghts-*/restart/[ab].restart 2>/dev/null | head -1 || true)"
+run_dir="${1:-${newest:+$(dirname "$(dirname "$newest")")}}"
+run_dir="${run_dir:-$here/runs/paper-liggghts-both}"
 steps="${2:-1000}"
 restart="$(ls -t "$run_dir"/restart/a.restart "$run_dir"/restart/b.restart 2>/dev/null | head -1 || true)"
 if [ -z "$restart" ]; then
@@ -30,7 +34,7 @@ strip() {  # in.lmp -> the same scene from start.restart, without outputs, for $
       -e '/^write_restart/d' -e "s/^run .*/run $steps/" "$1"
 }
 strip "$run_dir/in.lmp" > "$work/in_on.lmp"
-sed -e '/^fix farfield/d' -e 's/^group idle subtract all all/group idle delete/' \
+sed -e '/^fix farfield/d' -e 's/^group idle subtract all all/group idle delete/' -e 's/ f_farfield\[1\]//' \
     -e 's/^neigh_modify delay 0 exclude group idle idle/neigh_modify delay 0/' "$work/in_on.lmp" > "$work/in_off.lmp"
 # A run without the far field: then the run's own scene is measured on 1 and 2 ranks, and the same scene
 # with the case's far field switched on, once per wake rule.
@@ -65,12 +69,14 @@ awk -v a="$t_on2" -v b="$t_on1" -v c="$t_off2" -v l="$label" 'BEGIN {
   if (b > 0) printf "%s1 rank : %.1f s   parallel efficiency 2 ranks: %.0f %%\n", l, b, 100 * b / (2 * a);
   if (c > 0) printf "far field off, 2 ranks: %.1f s   far-field speed-up: %.2fx\n", c, c / a;
 }'
-[ "$has_ff" = 1 ] && exit 0
+idle_count() {  # thermo's last column (f_farfield[1]) at the first and the last thermo line of log $1
+  awk -v n="$atoms" '$1 == "Step" { h = 1; next } h && /^ *[0-9]/ { if (first == "") first = $NF; last = $NF }
+    /^Loop time/ { h = 0 } END { printf "  idle pieces: %d (%.0f %%) at the start, %d (%.0f %%) at the end\n",
+    first, 100 * first / n, last, 100 * last / n }' "$1"
+}
+if [ "$has_ff" = 1 ]; then idle_count log_in_on.lmp_2.txt; exit 0; fi
 for rule in $wake_rules; do
   awk -v a="$t_on2" -v f="${t_ff2[$rule]}" -v r="$rule" 'BEGIN {
     printf "far field on (case window, wake by %s), 2 ranks: %.1f s   far-field speed-up: %.2fx\n", r, f, a / f }'
-  # its idle pieces (thermo's last column, f_farfield[1]) at the first and the last thermo line
-  awk -v n="$atoms" '$1 == "Step" { h = 1; next } h && /^ *[0-9]/ { if (first == "") first = $NF; last = $NF }
-    /^Loop time/ { h = 0 } END { printf "  idle pieces: %d (%.0f %%) at the start, %d (%.0f %%) at the end\n",
-    first, 100 * first / n, last, 100 * last / n }' "log_in_ff_$rule.lmp_2.txt"
+  idle_count "log_in_ff_$rule.lmp_2.txt"
 done
