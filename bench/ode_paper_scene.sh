@@ -7,12 +7,12 @@
 # Each runs from the fresh bed with the bow entering the ice for DURATION_S of model time; the seconds per step
 # are read off the progress lines (model time, elapsed wall time, contacts) over the stretch where the scene has
 # at least CONTACTS contacts, and over the first stretch (the fresh bed). Prints the ratio before / after.
-#   bash bench/ode_paper_scene.sh [DURATION_S] [CONTACTS]        (defaults 0.15 s, 400000; ~20 min)
+#   bash bench/ode_paper_scene.sh [DURATION_S] [CONTACTS]        (defaults 0.2 s, 400000; ~30 min)
 # Skipped with a message when bench-ode was not built (BRASH_WITH_ODE=OFF).
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 bin="${BRASH_BIN:-$here/build/bin}"
-duration="${1:-0.15}"
+duration="${1:-0.2}"
 contacts="${2:-400000}"
 case_dir="${CASE:-$here/cases/jbc_ia_5kn}"
 dt=1e-3
