@@ -60,6 +60,8 @@ for side in before after; do
   read -r fresh deep n t0 t1 <<< "${result[$side]}"
   printf '%-6s (%s): %s s per step on the fresh bed, %s s per step at >= %s contacts (t = %s-%s s, %s at the end)\n' \
     "$side" "${opts[$side]}" "$fresh" "$deep" "$contacts" "$t0" "$t1" "$n"
+  # where the whole run's time went (bench-ode's summary line)
+  grep -o '(fluid [0-9.]* / collide [0-9.]* / quickstep [0-9.]* s)' "$log" | sed 's/^/       whole run: /' || true
 done
 read -r fb db _ <<< "${result[before]}"
 read -r fa da _ <<< "${result[after]}"
