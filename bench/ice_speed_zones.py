@@ -54,7 +54,7 @@ print(f'{"behind the stern":34s} {zone(x < stern)}')
 half_width = float(case_value(run, 'channel.width_m')) / 2
 y_edges = np.linspace(0, half_width, 6)
 for lo, hi in [(0, 0.5), (0.5, 1.5), (1.5, 3), (3, 5), (5, 1e9)]:
-    along = (x >= stern) & (x < bow) & (x < bow - lo) & (x >= bow - hi)
+    along = (x >= stern) & (x < bow - lo) & (x >= bow - hi)
     label = f'alongside, {lo:g}-{hi:g} m behind the bow' if hi < 1e9 else f'alongside, over {lo:g} m behind the bow'
     print(f'{label:34s} {zone(along)}')
     for y0, y1 in zip(y_edges[:-1], y_edges[1:]):
