@@ -442,7 +442,8 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
   {  // speedups (docs/performance.md)
     const auto s = r.section(root, "speedups",
                              {"farfield", "farfield_ahead_m", "farfield_behind_m", "farfield_every_steps",
-                              "farfield_wake_force_weight", "farfield_wake_speed_m_s", "farfield_wake_by", "symmetry_y", "neighbor_skin_d", "early_stop_rel_ci", "early_stop_trend_check"});
+                              "farfield_wake_force_weight", "farfield_wake_speed_m_s", "farfield_wake_by", "moving_window",
+                              "moving_window_ahead_m", "moving_window_behind_m", "symmetry_y", "neighbor_skin_d", "early_stop_rel_ci", "early_stop_trend_check"});
     r.boolean(s, "speedups", "farfield", c.speedups.farfield);
     r.num(s, "speedups", "farfield_ahead_m", c.speedups.farfield_ahead_m, non_negative, ">= 0");
     r.num(s, "speedups", "farfield_behind_m", c.speedups.farfield_behind_m, non_negative, ">= 0");
@@ -459,6 +460,9 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
       r.fail(s["farfield_wake_speed_m_s"], "speedups.farfield_wake_speed_m_s",
              "must be > 0 with farfield_wake_by: neighbour_speed (it is the speed that wakes idle ice; for the "
              "window alone use farfield_wake_by: force with farfield_wake_force_weight: 0)");
+    r.boolean(s, "speedups", "moving_window", c.speedups.moving_window);
+    r.num(s, "speedups", "moving_window_ahead_m", c.speedups.moving_window_ahead_m, positive, "> 0");
+    r.num(s, "speedups", "moving_window_behind_m", c.speedups.moving_window_behind_m, positive, "> 0");
     r.boolean(s, "speedups", "symmetry_y", c.speedups.symmetry_y);
     r.num(s, "speedups", "neighbor_skin_d", c.speedups.neighbor_skin_d,
           [](double k) { return k > 0 && k <= 2; }, "in (0, 2]");
@@ -471,6 +475,17 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
       r.fail(s["farfield_ahead_m"], "speedups.farfield_ahead_m",
              fmt::format("{} m is less than 2 ice diameters ({} m): the bow would push idle ice",
                          c.speedups.farfield_ahead_m, 2 * c.ice.diameter_mean_m));
+    // The held-out bed must lie beyond the ice the scene integrates (the far field's window ahead).
+    const double least_ahead_m =
+        std::max(2 * c.ice.diameter_mean_m, c.speedups.farfield ? c.speedups.farfield_ahead_m : 0.0);
+    if (c.speedups.moving_window && !(c.speedups.farfield_wake_speed_m_s > 0))
+      r.fail(s["farfield_wake_speed_m_s"], "speedups.farfield_wake_speed_m_s",
+             "must be > 0 with moving_window: true (the window's front leads the ice moving faster than it)");
+    if (c.speedups.moving_window && c.speedups.moving_window_ahead_m < least_ahead_m)
+      r.fail(s["moving_window_ahead_m"], "speedups.moving_window_ahead_m",
+             fmt::format("{} m is less than {} m (2 ice diameters and farfield_ahead_m): the bow would push "
+                         "into the held-out bed",
+                         c.speedups.moving_window_ahead_m, least_ahead_m));
   }
   {  // guards (docs/stability.md)
     const auto s = r.section(root, "guards", {"max_hull_penetration_d", "every_steps"});
@@ -636,6 +651,9 @@ std::string dump_case_yaml(const Case& c) {
   line("  ", "farfield_wake_force_weight", num(c.speedups.farfield_wake_force_weight));
   line("  ", "farfield_wake_speed_m_s", num(c.speedups.farfield_wake_speed_m_s));
   line("  ", "farfield_wake_by", std::string(to_string(c.speedups.farfield_wake_by)));
+  line("  ", "moving_window", c.speedups.moving_window ? "true" : "false");
+  line("  ", "moving_window_ahead_m", num(c.speedups.moving_window_ahead_m));
+  line("  ", "moving_window_behind_m", num(c.speedups.moving_window_behind_m));
   line("  ", "symmetry_y", c.speedups.symmetry_y ? "true" : "false");
   line("  ", "neighbor_skin_d", num(c.speedups.neighbor_skin_d));
   line("  ", "early_stop_rel_ci", num(c.speedups.early_stop_rel_ci));

@@ -30,6 +30,8 @@ class FixBrashExit : public LAMMPS_NS::Fix {
   void pre_exchange() override;
   void post_run() override;
   double compute_scalar() override;
+  // Another fix added (> 0) or removed (< 0) this many atoms on purpose (fix brash/window), at PRE_EXCHANGE.
+  void expect_atoms(long long change) { expected_atoms_ += change; }
   void write_restart(FILE* fp) override;
   void restart(char* buf) override;
 

@@ -8,6 +8,7 @@
 #include "fix_brash_exit.h"
 #include "fix_brash_farfield.h"
 #include "fix_brash_guard.h"
+#include "fix_brash_window.h"
 #include "fix_icefluid.h"
 #include "input.h"
 #include "lammps.h"
@@ -30,6 +31,7 @@ int main(int argc, char** argv) {
   brash::liggghts::register_fix_style<brash::liggghts::FixBrashFarfield>(lmp, "brash/farfield");
   brash::liggghts::register_fix_style<brash::liggghts::FixBrashGuard>(lmp, "brash/guard");
   brash::liggghts::register_fix_style<brash::liggghts::FixBrashExit>(lmp, "brash/exit");
+  brash::liggghts::register_fix_style<brash::liggghts::FixBrashWindow>(lmp, "brash/window");
   lmp->input->file();
   delete lmp;
   MPI_Finalize();

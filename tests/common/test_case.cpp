@@ -160,6 +160,9 @@ TEST(CaseLoader, DumpThenLoadGivesTheSameCase) {
     c.speedups.farfield_wake_force_weight = 0.02;
     c.speedups.farfield_wake_speed_m_s = 1.0 / 7.0;
     c.speedups.farfield_wake_by = brash::WakeBy::NeighbourSpeed;
+    c.speedups.moving_window = true;
+    c.speedups.moving_window_ahead_m = 1.0 / 1.3;
+    c.speedups.moving_window_behind_m = 2.5;
     c.speedups.symmetry_y = true;
     c.speedups.neighbor_skin_d = 0.35;
     c.speedups.early_stop_rel_ci = 0.03;
@@ -360,6 +363,7 @@ TEST(CaseLoader, SpeedupsDefaultOffAndRead) {
   const Case d = brash::parse_case("name: x\n", kRepo, "mem");
   EXPECT_FALSE(d.speedups.farfield);
   EXPECT_FALSE(d.speedups.symmetry_y);
+  EXPECT_FALSE(d.speedups.moving_window);
   EXPECT_DOUBLE_EQ(d.speedups.neighbor_skin_d, 0.2);
   EXPECT_DOUBLE_EQ(d.speedups.farfield_wake_force_weight, 1e-3);  // the far field wakes pushed ice by default
   EXPECT_EQ(d.speedups.farfield_wake_by, brash::WakeBy::Force);
@@ -389,6 +393,10 @@ TEST(CaseLoaderErrors, SpeedupsKeysNamed) {
   expect_error("name: x\nspeedups: {farfield_wake_by: push}\n", {"speedups.farfield_wake_by", "force", "neighbour_speed"});
   expect_error("name: x\nspeedups: {farfield: true, farfield_wake_by: neighbour_speed, farfield_wake_speed_m_s: 0}\n",
                {"speedups.farfield_wake_speed_m_s", "> 0", "neighbour_speed"});
+  expect_error("name: x\nspeedups: {moving_window_behind_m: 0}\n", {"speedups.moving_window_behind_m", "> 0"});
+  expect_error("name: x\nspeedups: {farfield: true, farfield_ahead_m: 0.3, moving_window: true, "
+               "moving_window_ahead_m: 0.2}\n",
+               {"speedups.moving_window_ahead_m", "farfield_ahead_m", "held-out bed"});
   expect_error("name: x\nspeedups: {farfield: true, farfield_ahead_m: 0.01}\n",
                {"speedups.farfield_ahead_m", "2 ice diameters"});
   expect_error("name: x\nspeedups: {neighbor_skin_d: 0}\n", {"speedups.neighbor_skin_d", "(0, 2]"});

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "brash/core/far_field.hpp"
@@ -115,4 +116,16 @@ TEST(WakeRule, TouchingIsCentreDistanceBelowTheSumOfTheRadii) {
   EXPECT_FALSE(touching(0.02, 0.0, 0.0, 0.01, 0.01));
   EXPECT_TRUE(touching(0.012, -0.012, 0.008, 0.01, 0.0088));   // |d| 0.018762 < 0.0188
   EXPECT_FALSE(touching(0.012, -0.012, 0.008, 0.01, 0.0087));  // |d| 0.018762 > 0.0187
+}
+
+TEST(MovingWindow, FrontLeadsTheBowAndThePushAndNeverRecedes) {
+  constexpr double kNone = -std::numeric_limits<double>::infinity();
+  // stern 1, bow 3, 2 m kept behind the stern, the front 1.5 m ahead
+  MovingWindow w = moving_window(1.0, 3.0, kNone, kNone, 2.0, 1.5);
+  EXPECT_EQ(w.remove_below_x_m, -1.0);
+  EXPECT_EQ(w.insert_below_x_m, 4.5);
+  w = moving_window(1.0, 3.0, 3.7, kNone, 2.0, 1.5);  // the push 0.7 m ahead of the bow
+  EXPECT_EQ(w.insert_below_x_m, 5.2);
+  w = moving_window(1.0, 3.0, 2.0, 5.2, 2.0, 1.5);  // the pushed ice has stopped: the front stays
+  EXPECT_EQ(w.insert_below_x_m, 5.2);
 }

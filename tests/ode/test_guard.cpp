@@ -168,7 +168,7 @@ TEST_F(OdeGuard, HullFlowRunsWithDragAndIsRefusedWithAddedMass) {
 }
 
 // Keys only LIGGGHTS carries out are refused by name before any output, not run as the whole channel with
-// every piece awake: the settled bed, the half channel and the idle far field.
+// every piece awake: the settled bed, the half channel, the idle far field and the moving window.
 TEST_F(OdeGuard, KeysOnlyLiggghtsCarriesOutAreRefusedByName) {
   const struct {
     const char* name;
@@ -177,7 +177,8 @@ TEST_F(OdeGuard, KeysOnlyLiggghtsCarriesOutAreRefusedByName) {
     const char* key;
   } cases[] = {{"settle", "\nice:\n", "\nice:\n  settle: true\n", "ice.settle: true"},
                {"symmetry", "\nrun:\n", "\nspeedups:\n  symmetry_y: true\nrun:\n", "speedups.symmetry_y: true"},
-               {"farfield", "\nrun:\n", "\nspeedups:\n  farfield: true\nrun:\n", "speedups.farfield: true"}};
+               {"farfield", "\nrun:\n", "\nspeedups:\n  farfield: true\nrun:\n", "speedups.farfield: true"},
+               {"window", "\nrun:\n", "\nspeedups:\n  moving_window: true\nrun:\n", "speedups.moving_window: true"}};
   for (const auto& c : cases) {
     const auto r = run(make_case(std::string("refused_") + c.name, c.from, c.to, ""), "0.1");
     EXPECT_EQ(r.exit_code, 2) << c.name << ": " << r.err;

@@ -155,6 +155,10 @@ struct SpeedupSpec {
                                         // once slower than this
   WakeBy farfield_wake_by = WakeBy::Force;  // what wakes an idle piece: force (the force weight above) or
                                         // neighbour_speed (a touching active piece faster than the wake speed)
+  bool moving_window = false;           // only the ice around the hull in the scene: the bed ahead held out until
+                                        // the front reaches it, the ice far behind the stern removed
+  double moving_window_ahead_m = 1.0;   // the front: this far ahead of the bow and of the foremost moving piece
+  double moving_window_behind_m = 2.0;  // removed: more than this behind the stern
   bool symmetry_y = false;              // half channel y >= 0, frictionless wall at y = 0, forces x 2
   double neighbor_skin_d = 0.2;         // neighbour-list skin in mean sphere diameters
   double early_stop_rel_ci = 0;         // stop once the 95 % CI of the window mean is below this fraction of

@@ -1,6 +1,7 @@
 // The far-field rule (see far_field.hpp). Squared norms: no square roots on the per-piece path.
 #include "brash/core/far_field.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -34,6 +35,14 @@ bool idle_after_update(const WakeRule& rule, FarFieldZone zone, bool was_idle, b
   if (!rule.enabled()) return true;
   if (zone == FarFieldZone::Ahead && !first_update) return was_idle;
   return v.x() * v.x() + v.y() * v.y() + v.z() * v.z() <= rule.speed_m_s * rule.speed_m_s;
+}
+
+MovingWindow moving_window(double stern_x_m, double bow_x_m, double foremost_moving_x_m, double previous_front_x_m,
+                           double behind_m, double ahead_m) {
+  MovingWindow w;
+  w.remove_below_x_m = stern_x_m - behind_m;
+  w.insert_below_x_m = std::max(previous_front_x_m, std::max(bow_x_m, foremost_moving_x_m) + ahead_m);
+  return w;
 }
 
 }  // namespace brash::core

@@ -174,6 +174,8 @@ void refuse_what_the_engine_cannot_run(const Case& c, const fs::path& case_file,
     refuse("speedups.symmetry_y", "the half channel", "runs the whole channel (speedups.symmetry_y: false)");
   if (c.speedups.farfield && !engine.idles_far_field())
     refuse("speedups.farfield", "the idle far field", "integrates every piece (speedups.farfield: false)");
+  if (c.speedups.moving_window && !engine.moves_window())
+    refuse("speedups.moving_window", "the moving window", "runs the whole channel (speedups.moving_window: false)");
   if (reasons.empty()) return;
   throw InputError(fmt::format("{}: {}. Run a copy made with `brash-case derive {}{} --out DIR`", case_file.string(),
                                fmt::join(reasons, "; "), case_file.parent_path().string(), fmt::join(sets, "")));

@@ -23,6 +23,7 @@ class LiggghtsEngine final : public run::Engine {
   bool starts_from_settled_bed() const override { return true; }
   bool runs_half_channel() const override { return true; }
   bool idles_far_field() const override { return true; }
+  bool moves_window() const override { return true; }
   nlohmann::json meta() const override;
   void load(const Case& c, const std::filesystem::path& case_file, const std::vector<Sphere>& spheres) override;
   void write_scene(const std::filesystem::path& run_dir, bool resume) override;

@@ -209,6 +209,13 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
   // one neighbour skin inside the guard's x range so that they go before the guard sees them
   // (fix_brash_exit.h)
   s += fmt::format("fix exit all brash/exit xlo {:.9g} xhi {:.9g}\n", gb[0] + skin_m, gb[1] - skin_m);
+  // the moving window (docs/performance.md): after fix exit and fix farfield, whose bookkeeping it updates; its
+  // front leads the far field's moving ice by the same speed
+  if (sp.moving_window)
+    s += fmt::format("fix window all brash/window every {} ahead {:.9g} behind {:.9g} hull_x0 {:.9g} speed {:.9g} "
+                     "bow_offset {:.9g} stern_offset {:.9g} moving_speed {:.9g}\n",
+                     sp.farfield_every_steps, sp.moving_window_ahead_m, sp.moving_window_behind_m, hull_x0,
+                     c.ship.speed_m_s, opt.hull_x_max_m, opt.hull_x_min_m, sp.farfield_wake_speed_m_s);
   // fluid forces last: implicit added mass scales the sum of all other forces
   s += fmt::format(
       "fix fl {} icefluid {} output_every {}{}\n", moving, icefluid_arguments(brash::fluid_params(c)), dump_every,
@@ -231,12 +238,12 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
   s += "dump_modify parts pad 10\n";
   if (opt.restart_every_steps > 0)
     s += fmt::format("restart {} restart/a.restart restart/b.restart\n", opt.restart_every_steps);
-  // with the far field, the last column is the number of idle pieces (log.txt: how far the disturbance
-  // reached) lost ignore: fix brash/exit removes pieces and checks for lost atoms itself (LIGGGHTS' `lost
+  // with the moving window, the pieces held out; with the far field, the last column is the number of idle
+  // pieces (log.txt: how far the disturbance reached). lost ignore: fix brash/exit removes pieces and checks for lost atoms itself (LIGGGHTS' `lost
   // error` counts against the run's initial number after a read_restart: fix_brash_exit.cpp)
   s += fmt::format(
-      "thermo_style custom step v_t atoms ke f_hull[1] cpu{}\nthermo {}\nthermo_modify norm no lost ignore\n",
-      sp.farfield ? " f_farfield[1]" : "", thermo_every);
+      "thermo_style custom step v_t atoms ke f_hull[1] cpu{}{}\nthermo {}\nthermo_modify norm no lost ignore\n",
+      sp.moving_window ? " f_window[1]" : "", sp.farfield ? " f_farfield[1]" : "", thermo_every);
   s += fmt::format("run {}{}\n", steps, opt.restart_file.empty() ? "" : " upto");  // upto: to the same end step
   s += "write_restart restart/final.restart\n";
   return s;

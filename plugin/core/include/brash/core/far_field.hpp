@@ -72,4 +72,17 @@ constexpr bool touching(double dx_m, double dy_m, double dz_m, double r1_m, doub
 bool idle_after_update(const WakeRule& rule, FarFieldZone zone, bool was_idle, bool first_update,
                        const Vec3& velocity_m_s);
 
+// The moving window (speedups.window, fix brash/window): only the ice around the hull is in the scene. The
+// undisturbed bed ahead is held out until the front reaches it, and the ice far behind the stern is removed.
+struct MovingWindow {
+  double remove_below_x_m = 0;  // a piece behind this leaves the scene for good
+  double insert_below_x_m = 0;  // a held-out piece before this enters the scene (at rest, where it was)
+};
+
+// The window now: the front lies `ahead` beyond the bow and beyond the foremost piece that moves faster than the
+// wake speed (the push: moving ice never meets the edge of the held-out bed), and never recedes (a piece that
+// entered the scene stays); pieces more than `behind` behind the stern leave. No moving piece: -infinity.
+MovingWindow moving_window(double stern_x_m, double bow_x_m, double foremost_moving_x_m, double previous_front_x_m,
+                           double behind_m, double ahead_m);
+
 }  // namespace brash::core

@@ -61,6 +61,7 @@ class Engine {
   // awake, while the case says otherwise.
   virtual bool runs_half_channel() const { return false; }
   virtual bool idles_far_field() const { return false; }
+  virtual bool moves_window() const { return false; }  // speedups.moving_window
 
   // Checks the case against what this engine can run and reads what the scene needs (hull, packing), before
   // any output is written. Throws InputError naming the case file.
