@@ -25,7 +25,7 @@ work="$(mktemp -d /tmp/brash-odescene-XXXX)"
 trap 'rm -rf "$work"' EXIT
 # ODE starts from the packing with every piece integrated (the paper case's settled bed and far field are LIGGGHTS')
 # (the derived case uses the base's packing)
-"$bin/brash-case" derive "$case_dir" --out "$work/case" --set ice.settle=false --set speedups.farfield=false > /dev/null
+"$bin/brash-case" derive "$case_dir" --out "$work/case" --set ice.settle=false --set speedups.farfield=false --set speedups.moving_window=false > /dev/null
 case_dir="$work/case"
 
 # Seconds per step from the progress lines of LOG: over the lines with >= CONTACTS contacts, and over the first ones.

@@ -23,6 +23,7 @@ n_seeds="${1:-12}"
 out="${2:-$here/runs/rank-ensemble}"
 bin="${BRASH_BIN:-$here/build/bin}"
 case_src="$(cd "${CASE:-$here/cases/jbc_narrow}" && pwd)"
+case_base="$(basename "$case_src")"
 sides=("${SIDE_A:-1}" "${SIDE_B:-2}")
 mkdir -p "$out/cases"
 source "$here/bench/case_variant.sh"
@@ -31,15 +32,20 @@ edits_of() { [[ "$1" == *:* ]] && echo "${1#*:}" || true; }
 is_ode() { [[ "$(np_of "$1")" == ode* ]]; }
 # field N of an ODE side ode[@DT[@ITERATIONS]]: 1 = DT, 2 = ITERATIONS (empty when not given)
 ode_field() { local IFS=@ f; read -r -a f <<< "$(np_of "$1")"; echo "${f[$2]:-}"; }
-# run name of a side: np<N> or ode[_dt<DT>][_it<N>], plus the edits when there are any (np1-run.timestep_s_2.0e-4)
+# run name of a side: np<N> or ode[_dt<DT>][_it<N>], plus the edits when there are any (np1-run.timestep_s_2.0e-4);
+# a name too long for the seed case's folder <case>_s<N>-<name> (a file name: 255 characters) keeps what fits
+# less 17 characters, then a hash of the whole
 side_name() {
-  local e np dt it; e="$(edits_of "$1")"; np="$(np_of "$1")"
+  local e np dt it name; e="$(edits_of "$1")"; np="$(np_of "$1")"
   if is_ode "$1"; then
     dt="$(ode_field "$1" 1)"; it="$(ode_field "$1" 2)"; np="ode${dt:+_dt$dt}${it:+_it$it}"
   else
     np="np$np"
   fi
-  echo "$np${e:+-$(printf '%s' "$e" | tr ',=' '__' | tr -cd 'A-Za-z0-9._-')}"
+  name="$np${e:+-$(printf '%s' "$e" | tr ',=' '__' | tr -cd 'A-Za-z0-9._-')}"
+  local fits=$((255 - ${#case_base} - ${#n_seeds} - 3))
+  [ "${#name}" -le "$fits" ] || name="${name:0:$((fits - 17))}-$(printf '%s' "$name" | sha256sum | cut -c1-16)"
+  echo "$name"
 }
 # human label of a side, as the table prints it: "2 ranks", "ODE, dt 5e-4 s, 40 iterations", plus the edits
 side_label() {

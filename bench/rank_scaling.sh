@@ -35,7 +35,7 @@ scene="${SCENE:-}"
 if [ -z "$scene" ]; then
   # every piece integrated from the packing (the scene these timings are of; the paper case's settled bed would
   # first be made, ~25 min on one rank)
-  sets=(--set ice.settle=false --set speedups.farfield=false)
+  sets=(--set ice.settle=false --set speedups.farfield=false --set speedups.moving_window=false)
   # pieces the hull now overlaps are inside it at the start: the hull penetration guard is off
   [ -z "${HULL_X_M:-}" ] || sets+=(--set "hull.start_x_m=$HULL_X_M" --set guards.max_hull_penetration_d=0)
   "$bin/brash-case" derive "$case_dir" "${sets[@]}" --out "$work/case" > /dev/null

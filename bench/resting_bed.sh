@@ -20,7 +20,7 @@ half_dt="$(awk -v d="$dt" 'BEGIN { printf "%.6g", d / 2 }')"
 rho_ice="$("$bin/brash-case" get "$case_src" ice.density_kg_m3)"
 # the averaging window inside the shorter run; the shorter channel's own packing (same seed) in the variant's folder
 base="channel.length_m=$length,ship.speed_m_s=1.0e-9,run.duration_s=$duration,run.dump_interval_s=0.25"
-base="$base,run.window_s=[0.0,$duration],ice.packing_file=generated/packing.csv,ice.settle=false,speedups.farfield=false"
+base="$base,run.window_s=[0.0,$duration],ice.packing_file=generated/packing.csv,ice.settle=false,speedups.farfield=false,speedups.moving_window=false"
 variants=(
   "case:"
   "half_dt:run.timestep_s=$half_dt"

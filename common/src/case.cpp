@@ -478,6 +478,10 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
     // The held-out bed must lie beyond the ice the scene integrates (the far field's window ahead).
     const double least_ahead_m =
         std::max(2 * c.ice.diameter_mean_m, c.speedups.farfield ? c.speedups.farfield_ahead_m : 0.0);
+    if (c.speedups.moving_window && !c.ice.settle)
+      r.fail(s["moving_window"], "speedups.moving_window",
+             "needs ice.settle: true (a held-out piece re-enters the scene at rest, where it was: the settled bed is "
+             "at rest, the packing is not)");
     if (c.speedups.moving_window && !(c.speedups.farfield_wake_speed_m_s > 0))
       r.fail(s["farfield_wake_speed_m_s"], "speedups.farfield_wake_speed_m_s",
              "must be > 0 with moving_window: true (the window's front leads the ice moving faster than it)");

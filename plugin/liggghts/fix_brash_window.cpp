@@ -34,7 +34,9 @@ double to_number(Error* error, const std::string& keyword, const char* text) {
   char* end = nullptr;
   const double v = std::strtod(text, &end);
   if (end == text || *end != '\0' || !std::isfinite(v))
-    error->all(FLERR, fmt::format("fix brash/window: keyword '{}' expects a number, got '{}'", keyword, text).c_str());
+    error->all(
+        FLERR,
+        fmt::format("fix brash/window: keyword '{}' expects a number, got '{}'", keyword, text).c_str());
   return v;
 }
 
@@ -47,13 +49,16 @@ int fix_index(Modify* modify, const char* style) {
 
 }  // namespace
 
-FixBrashWindow::FixBrashWindow(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg), front_x_m_(kNoFront) {
+FixBrashWindow::FixBrashWindow(LAMMPS* lmp, int narg, char** arg)
+    : Fix(lmp, narg, arg), front_x_m_(kNoFront) {
   for (int iarg = 3; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
-    if (iarg + 1 >= narg) error->all(FLERR, fmt::format("fix brash/window: keyword '{}' needs a value", key).c_str());
+    if (iarg + 1 >= narg)
+      error->all(FLERR, fmt::format("fix brash/window: keyword '{}' needs a value", key).c_str());
     const double v = to_number(error, key, arg[iarg + 1]);
     if (key == "every") {
-      if (v < 1 || v != std::floor(v) || v > 1e9) error->all(FLERR, "fix brash/window: 'every' must be an integer >= 1");
+      if (v < 1 || v != std::floor(v) || v > 1e9)
+        error->all(FLERR, "fix brash/window: 'every' must be an integer >= 1");
       every_ = static_cast<int>(v);
     } else if (key == "ahead") {
       ahead_ = v, have_ahead_ = true;
@@ -70,16 +75,19 @@ FixBrashWindow::FixBrashWindow(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, nar
     } else if (key == "moving_speed") {
       moving_speed_ = v;
     } else {
-      error->all(FLERR, fmt::format("fix brash/window: unknown keyword '{}' (expected every, ahead, behind, hull_x0, "
-                                    "speed, bow_offset, stern_offset, moving_speed)",
-                                    key)
+      error->all(FLERR, fmt::format(
+                            "fix brash/window: unknown keyword '{}' (expected every, ahead, behind, hull_x0, "
+                            "speed, bow_offset, stern_offset, moving_speed)",
+                            key)
                             .c_str());
     }
   }
   if (!(have_ahead_ && have_behind_ && have_x0_ && have_speed_ && have_bow_ && have_stern_))
-    error->all(FLERR,
-               "fix brash/window: keywords ahead, behind, hull_x0, speed, bow_offset and stern_offset are required");
-  if (!(ahead_ > 0) || !(behind_ > 0)) error->all(FLERR, "fix brash/window: 'ahead' and 'behind' must be > 0");
+    error->all(
+        FLERR,
+        "fix brash/window: keywords ahead, behind, hull_x0, speed, bow_offset and stern_offset are required");
+  if (!(ahead_ > 0) || !(behind_ > 0))
+    error->all(FLERR, "fix brash/window: 'ahead' and 'behind' must be > 0");
   if (!(moving_speed_ > 0)) error->all(FLERR, "fix brash/window: 'moving_speed' must be > 0");
   if (stern_offset_ > bow_offset_) error->all(FLERR, "fix brash/window: stern_offset must be <= bow_offset");
   if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag)
@@ -94,10 +102,12 @@ FixBrashWindow::FixBrashWindow(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, nar
   restart_global = 1;
 }
 
-int FixBrashWindow::setmask() { return PRE_EXCHANGE; }
+int FixBrashWindow::setmask() {
+  return PRE_EXCHANGE;
+}
 
-// Fix brash/exit counts the atoms from its own set-up on and fix brash/farfield's marks are by local index: both
-// must act before this fix at each build.
+// Fix brash/exit counts the atoms from its own set-up on and fix brash/farfield's marks are by local index:
+// both must act before this fix at each build.
 void FixBrashWindow::init() {
   const int me = fix_index(modify, style), exit = fix_index(modify, "brash/exit"),
             farfield = fix_index(modify, "brash/farfield");
@@ -119,7 +129,8 @@ double FixBrashWindow::front_now(double t_s) const {
   return brash::core::moving_window(stern, bow, foremost, front_x_m_, behind_, ahead_).insert_below_x_m;
 }
 
-// A run's set-up: hold out what lies beyond the front (once: a resumed run has its list from the restart file).
+// A run's set-up: hold out what lies beyond the front (once: a resumed run has its list from the restart
+// file).
 void FixBrashWindow::setup_pre_exchange() {
   const double t = static_cast<double>(update->ntimestep) * update->dt;
   front_x_m_ = front_now(t);
@@ -150,8 +161,14 @@ void FixBrashWindow::hold_out_beyond(double front_x_m) {
   for (int i = 0; i < n;) {
     double* xi = atom->x[i];
     if ((atom->mask[i] & groupbit) && xi[0] >= front_x_m) {
-      const HeldPiece p{static_cast<double>(atom->tag[i]), static_cast<double>(atom->type[i]),
-                        static_cast<double>(atom->mask[i]), xi[0], xi[1], xi[2], atom->radius[i], atom->rmass[i],
+      const HeldPiece p{static_cast<double>(atom->tag[i]),
+                        static_cast<double>(atom->type[i]),
+                        static_cast<double>(atom->mask[i]),
+                        xi[0],
+                        xi[1],
+                        xi[2],
+                        atom->radius[i],
+                        atom->rmass[i],
                         atom->density_flag ? atom->density[i] : 0.0};
       const double* d = &p.tag;
       mine.insert(mine.end(), d, d + kDoublesPerPiece);
@@ -172,8 +189,9 @@ void FixBrashWindow::hold_out_beyond(double front_x_m) {
   held_.resize(all.size() / kDoublesPerPiece);
   std::memcpy(static_cast<void*>(held_.data()), all.data(), all.size() * sizeof(double));
   // the same order on every rank, whatever the ranks held
-  std::sort(held_.begin(), held_.end(),
-            [](const HeldPiece& a, const HeldPiece& b) { return a.x < b.x || (a.x == b.x && a.tag < b.tag); });
+  std::sort(held_.begin(), held_.end(), [](const HeldPiece& a, const HeldPiece& b) {
+    return a.x < b.x || (a.x == b.x && a.tag < b.tag);
+  });
   next_held_ = 0;
   atoms_changed(-static_cast<long long>(held_.size()));
 }

@@ -160,6 +160,7 @@ TEST(CaseLoader, DumpThenLoadGivesTheSameCase) {
     c.speedups.farfield_wake_force_weight = 0.02;
     c.speedups.farfield_wake_speed_m_s = 1.0 / 7.0;
     c.speedups.farfield_wake_by = brash::WakeBy::NeighbourSpeed;
+    c.ice.settle = true;  // the moving window needs the settled bed
     c.speedups.moving_window = true;
     c.speedups.moving_window_ahead_m = 1.0 / 1.3;
     c.speedups.moving_window_behind_m = 2.5;
@@ -394,7 +395,8 @@ TEST(CaseLoaderErrors, SpeedupsKeysNamed) {
   expect_error("name: x\nspeedups: {farfield: true, farfield_wake_by: neighbour_speed, farfield_wake_speed_m_s: 0}\n",
                {"speedups.farfield_wake_speed_m_s", "> 0", "neighbour_speed"});
   expect_error("name: x\nspeedups: {moving_window_behind_m: 0}\n", {"speedups.moving_window_behind_m", "> 0"});
-  expect_error("name: x\nspeedups: {farfield: true, farfield_ahead_m: 0.3, moving_window: true, "
+  expect_error("name: x\nspeedups: {moving_window: true}\n", {"speedups.moving_window", "ice.settle: true"});
+  expect_error("name: x\nice: {settle: true}\nspeedups: {farfield: true, farfield_ahead_m: 0.3, moving_window: true, "
                "moving_window_ahead_m: 0.2}\n",
                {"speedups.moving_window_ahead_m", "farfield_ahead_m", "held-out bed"});
   expect_error("name: x\nspeedups: {farfield: true, farfield_ahead_m: 0.01}\n",

@@ -1,13 +1,12 @@
-// fix brash/window (speedups.window) on a tiny scene: a chain of 12 touching spheres along x pushed on its first
-// sphere, a row of separated spheres at rest ahead of it (y = 0.2), a lone piece moving along +x (y = -0.3) and
-// one at rest behind the stern (y = -0.3), while the hull's window sweeps +x. The row beyond the front is held
-// out at set-up and enters the scene, at rest where it was, as the front passes it (the front follows the
-// moving piece, not only the bow); the piece behind the stern is removed. The pieces in the scene move exactly
-// as without the fix (1 and 2 ranks), the counts and the held-out list survive a restart, and fix brash/exit
-// is kept informed (it stops a run that loses atoms otherwise).
-#include <gtest/gtest.h>
-
+// fix brash/window (speedups.window) on a tiny scene: a chain of 12 touching spheres along x pushed on its
+// first sphere, a row of separated spheres at rest ahead of it (y = 0.2), a lone piece moving along +x (y =
+// -0.3) and one at rest behind the stern (y = -0.3), while the hull's window sweeps +x. The row beyond the
+// front is held out at set-up and enters the scene, at rest where it was, as the front passes it (the front
+// follows the moving piece, not only the bow); the piece behind the stern is removed. The pieces in the scene
+// move exactly as without the fix (1 and 2 ranks), the counts and the held-out list survive a restart, and
+// fix brash/exit is kept informed (it stops a run that loses atoms otherwise).
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <map>
@@ -30,7 +29,8 @@ constexpr int kMover = kChain + kRow + 1, kBack = kMover + 1;
 enum class Mode { NoFix, Window };
 
 std::string atoms_and_fixes() {
-  std::string s = fmt::format(R"(set group all diameter {d} density 900
+  std::string s =
+      fmt::format(R"(set group all diameter {d} density 900
 group pusher id 1
 group mover id {mover}
 velocity mover set {v} 0 0 units box
@@ -41,8 +41,8 @@ timestep {dt}
 fix integr all nve/sphere
 fix push pusher addforce 2e-3 0 0
 )",
-                              fmt::arg("d", kD), fmt::arg("mover", kMover), fmt::arg("v", kMoverV),
-                              fmt::arg("dt", kDt), fmt::arg("contacts", brash::test::ice_contact_model("0.5")));
+                  fmt::arg("d", kD), fmt::arg("mover", kMover), fmt::arg("v", kMoverV), fmt::arg("dt", kDt),
+                  fmt::arg("contacts", brash::test::ice_contact_model("0.5")));
   return s;
 }
 
@@ -62,8 +62,10 @@ std::string box_header(int ranks) {
 
 std::string scene(Mode mode, int ranks) {
   std::string s = box_header(ranks);
-  for (int k = 0; k < kChain; ++k) s += fmt::format("create_atoms 1 single {} 0 0 units box\n", kChainX0 + kD * k);
-  for (int k = 0; k < kRow; ++k) s += fmt::format("create_atoms 1 single {} 0.2 0 units box\n", kRowX0 + kRowDx * k);
+  for (int k = 0; k < kChain; ++k)
+    s += fmt::format("create_atoms 1 single {} 0 0 units box\n", kChainX0 + kD * k);
+  for (int k = 0; k < kRow; ++k)
+    s += fmt::format("create_atoms 1 single {} 0.2 0 units box\n", kRowX0 + kRowDx * k);
   s += fmt::format("create_atoms 1 single {} -0.3 0 units box\n", kMoverX0);
   s += fmt::format("create_atoms 1 single {} -0.3 0 units box\n", kBackX);
   s += atoms_and_fixes() + window_fixes(mode);
@@ -122,7 +124,9 @@ std::vector<double> thermo_at(const std::string& screen, int step) {
   return found;
 }
 
-double row_x(int id) { return kRowX0 + kRowDx * (id - kChain - 1); }
+double row_x(int id) {
+  return kRowX0 + kRowDx * (id - kChain - 1);
+}
 
 std::map<int, Piece> run_scene(Mode mode, int ranks, const std::filesystem::path& dir) {
   EXPECT_EQ(run_liggghts(dir, scene(mode, ranks), ranks), 0) << read_text(dir / "screen_in.lmp.txt");
@@ -139,8 +143,8 @@ TEST(LiggghtsWindow, HoldsOutTheBedAheadInsertsItAtRestAndRemovesThePiecesBehind
     const auto dir = fresh_dir(fmt::format("window{}", ranks));
     const auto& end = ends[ranks - 1] = run_scene(Mode::Window, ranks, dir);
     const std::string screen = read_text(dir / "screen_in.lmp.txt");
-    // at set-up: the front 0.3 m ahead of the bow (x = 0) and of nothing moving faster than 5 mm/s but the mover
-    // (x = 0.2 at 0.3 m/s): x = 0.5; the row's 3 pieces before it stay, its other 10 are held out
+    // at set-up: the front 0.3 m ahead of the bow (x = 0) and of nothing moving faster than 5 mm/s but the
+    // mover (x = 0.2 at 0.3 m/s): x = 0.5; the row's 3 pieces before it stay, its other 10 are held out
     const auto start = read_dump(dir / "dump.0.txt");
     EXPECT_EQ(start.size(), static_cast<std::size_t>(kBack - 10)) << "ranks " << ranks;
     const auto first = thermo_at(screen, 0);
@@ -184,7 +188,8 @@ TEST(LiggghtsWindow, HoldsOutTheBedAheadInsertsItAtRestAndRemovesThePiecesBehind
 TEST(LiggghtsWindow, ARestartKeepsTheHeldOutBedAndTheCounts) {
   const auto dir = fresh_dir("window_resume");
   const auto straight = run_scene(Mode::Window, 1, dir);
-  ASSERT_EQ(run_liggghts(dir, resumed_scene(1), 1, "in_resumed.lmp"), 0) << read_text(dir / "screen_in_resumed.lmp.txt");
+  ASSERT_EQ(run_liggghts(dir, resumed_scene(1), 1, "in_resumed.lmp"), 0)
+      << read_text(dir / "screen_in_resumed.lmp.txt");
   const auto resumed = read_dump(dir / fmt::format("resumed.{}.txt", kSteps));
   ASSERT_EQ(resumed.size(), straight.size());
   for (const auto& [id, p] : straight) {

@@ -178,7 +178,9 @@ TEST_F(OdeGuard, KeysOnlyLiggghtsCarriesOutAreRefusedByName) {
   } cases[] = {{"settle", "\nice:\n", "\nice:\n  settle: true\n", "ice.settle: true"},
                {"symmetry", "\nrun:\n", "\nspeedups:\n  symmetry_y: true\nrun:\n", "speedups.symmetry_y: true"},
                {"farfield", "\nrun:\n", "\nspeedups:\n  farfield: true\nrun:\n", "speedups.farfield: true"},
-               {"window", "\nrun:\n", "\nspeedups:\n  moving_window: true\nrun:\n", "speedups.moving_window: true"}};
+               // (the moving window needs the settled bed: both are named)
+               {"window", "\nice:\n", "\nspeedups:\n  moving_window: true\nice:\n  settle: true\n",
+                "speedups.moving_window: true"}};
   for (const auto& c : cases) {
     const auto r = run(make_case(std::string("refused_") + c.name, c.from, c.to, ""), "0.1");
     EXPECT_EQ(r.exit_code, 2) << c.name << ": " << r.err;

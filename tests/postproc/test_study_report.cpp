@@ -559,7 +559,9 @@ TEST(StudyReport, PaperSetUpTableComesFromEachRunsCaseAndMeta) {
   fs::create_directories(d / "runs/pl");
   fs::create_directories(d / "runs/po");
   std::ofstream(d / "runs/pl/case.yaml") << "name: jbc_ia_5kn\ncontact: {youngs_modulus_pa: 3.125e5}\n"
-                                            "speedups: {farfield: true, farfield_wake_force_weight: 0}\n";
+                                            "ice: {settle: true}\n"
+                                            "speedups: {farfield: true, farfield_wake_force_weight: 0, "
+                                            "moving_window: true}\n";
   std::ofstream(d / "runs/pl/meta.json") << json{
       {"engine", "liggghts"},
       {"fluid_model", "added_mass"},
@@ -599,7 +601,8 @@ TEST(StudyReport, PaperSetUpTableComesFromEachRunsCaseAndMeta) {
   EXPECT_NE(t.find("| time step | not stated | 0.0004 s | 0.001 s |"), std::string::npos) << t;
   EXPECT_NE(t.find("417415 spheres, d = 0.017578 m ± 0.0008789 m"), std::string::npos) << t;
   EXPECT_NE(t.find("417000 spheres, d = 0.017578 m ± 0.001 m"), std::string::npos) << t;
-  EXPECT_NE(t.find("| far field, window alone (biased high) | every piece integrated |"), std::string::npos)
+  EXPECT_NE(t.find("| far field, window alone (biased high); moving window | every piece integrated |"),
+            std::string::npos)
       << t;
   EXPECT_NE(t.find("| 1.35 / 0.1 | 1.35 / 0.1 | 1.35 / 0.1 |"), std::string::npos) << t;
   // LIGGGHTS has side walls only; an ODE run says whether it closed the ends (--end-walls)

@@ -49,10 +49,12 @@ std::string our_ice(const Column& col) {
 
 std::string our_far_field(const Column& col) {
   if (col.ode()) return col.ode_options().value("cull", false) ? "culled (window alone: biased high)" : "every piece integrated";
-  if (!col.c->speedups.farfield) return "every piece integrated";
-  if (farfield_window_alone(col.c->speedups)) return "far field, window alone (biased high)";
-  return col.c->speedups.farfield_wake_by == WakeBy::Force ? "far field with the wake rule"
-                                                           : "far field, woken by a neighbour's speed";
+  const std::string window = col.c->speedups.moving_window ? "; moving window" : "";
+  if (!col.c->speedups.farfield) return (window.empty() ? "every piece integrated" : "every piece in the window integrated") + window;
+  if (farfield_window_alone(col.c->speedups)) return "far field, window alone (biased high)" + window;
+  return (col.c->speedups.farfield_wake_by == WakeBy::Force ? "far field with the wake rule"
+                                                            : "far field, woken by a neighbour's speed") +
+         window;
 }
 
 std::string our_channel(const Column& col) {
