@@ -216,3 +216,47 @@ TEST(LiggghtsWindow, OrderAndArgumentsAreChecked) {
   EXPECT_NE(run_liggghts(dir, bad), 0);
   EXPECT_NE(read_text(dir / "screen_in.lmp.txt").find("'ahead' and 'behind' must be > 0"), std::string::npos);
 }
+
+// With the far field: the held-out pieces are idle ones and enter the scene idle (their group bits are kept), so
+// they stay where they were while a force pulls every active piece down; the moving piece stays active.
+TEST(LiggghtsWindow, HeldOutIdlePiecesEnterIdle) {
+  const auto dir = fresh_dir("window_farfield");
+  std::string s = box_header(1);
+  for (int k = 0; k < kRow; ++k) s += fmt::format("create_atoms 1 single {} 0.2 0 units box\n", kRowX0 + kRowDx * k);
+  s += fmt::format("create_atoms 1 single {} -0.3 0 units box\n", kMoverX0);
+  s += fmt::format(R"(set group all diameter {d} density 900
+group mover id {mover}
+velocity mover set {v} 0 0 units box
+group active type 1
+group idle subtract all all
+neighbor 0.002 bin
+neigh_modify delay 0 exclude group idle idle
+{contacts}
+timestep {dt}
+fix ff all brash/farfield every 100 ahead 0.1 behind 1 hull_x0 0 speed {u} bow_offset 0 stern_offset 0 wake_neighbour_speed 0.005
+fix exit all brash/exit xlo -0.099 xhi 1.099
+fix w all brash/window every 100 ahead {ahead} behind {behind} hull_x0 0 speed {u} bow_offset 0 stern_offset 0
+fix integr active nve/sphere
+fix pull active addforce 0 0 -1e-4
+dump d all custom {steps} dump.*.txt id x y z vx vy vz
+dump_modify d sort id
+thermo_style custom step atoms f_w[1] f_ff[1]
+thermo 100
+run {steps}
+)",
+                   fmt::arg("d", kD), fmt::arg("mover", kRow + 1), fmt::arg("v", kMoverV), fmt::arg("dt", kDt),
+                   fmt::arg("contacts", brash::test::ice_contact_model("0.5")), fmt::arg("u", kU),
+                   fmt::arg("ahead", kAhead), fmt::arg("behind", kBehind), fmt::arg("steps", kSteps));
+  ASSERT_EQ(run_liggghts(dir, s), 0) << read_text(dir / "screen_in.lmp.txt");
+  const auto start = read_dump(dir / "dump.0.txt"), end = read_dump(dir / fmt::format("dump.{}.txt", kSteps));
+  EXPECT_EQ(start.size(), 4u);  // the mover and the row's 3 pieces before x = 0.5
+  ASSERT_GT(end.size(), 7u);    // the front passed more of the row
+  for (const auto& [id, p] : end) {
+    if (id == kRow + 1) {
+      EXPECT_LT(p.z, -1e-3) << "the moving piece is active";
+    } else {
+      EXPECT_EQ(p.z, 0.0) << "row piece " << id << " entered active";
+      EXPECT_DOUBLE_EQ(p.x, kRowX0 + kRowDx * (id - 1));
+    }
+  }
+}
