@@ -13,6 +13,7 @@
 #include "atom_vec.h"
 #include "comm.h"
 #include "error.h"
+#include "fix_support.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -83,29 +84,14 @@ void FixBrashExit::pre_exchange() {
   // from the run's set-up on (and checked at its end too), and an atom gone elsewhere than through the ends
   // stops the run.
   check_no_atom_lost();
-  int n = atom->nlocal;
-  int removed = 0;
-  for (int i = 0; i < n;) {
+  const int removed = delete_local_atoms(atom, [&](int i) {
     const double x = atom->x[i][0];
-    if ((atom->mask[i] & groupbit) && (x < xlo_ || x > xhi_)) {
-      atom->avec->copy(n - 1, i, 1);  // the last local atom takes slot i (i is checked again)
-      --n;
-      ++removed;
-    } else {
-      ++i;
-    }
-  }
+    return (atom->mask[i] & groupbit) && (x < xlo_ || x > xhi_);
+  });
   int removed_all = 0;
   MPI_Allreduce(&removed, &removed_all, 1, MPI_INT, MPI_SUM, world);
   if (removed_all == 0) return;
-  atom->nlocal = n;
-  bigint nlocal = n;
-  MPI_Allreduce(&nlocal, &atom->natoms, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  if (atom->map_style) {
-    atom->nghost = 0;
-    atom->map_init();
-    atom->map_set();
-  }
+  recount_atoms(atom, world);
   removed_total_ += removed_all;
   expected_atoms_ -= removed_all;
   if (comm->me == 0) {

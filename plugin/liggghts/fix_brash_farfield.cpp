@@ -12,6 +12,7 @@
 #include "atom.h"
 #include "brash/core/far_field.hpp"
 #include "error.h"
+#include "fix_support.h"
 #include "force.h"
 #include "group.h"
 #include "neigh_list.h"
@@ -23,20 +24,6 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 namespace brash::liggghts {
-namespace {
-
-double to_number(Error* error, const std::string& keyword, const char* text) {
-  char* end = nullptr;
-  const double v = std::strtod(text, &end);
-  if (end == text || *end != '\0' || !std::isfinite(v)) {
-    const std::string msg = "fix brash/farfield: keyword '" + keyword + "' expects a number, got '" + text + "'";
-    error->all(FLERR, msg.c_str());
-  }
-  return v;
-}
-
-}  // namespace
-
 FixBrashFarfield::FixBrashFarfield(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) {
   for (int iarg = 3; iarg < narg;) {
     const std::string key = arg[iarg];
@@ -46,31 +33,25 @@ FixBrashFarfield::FixBrashFarfield(LAMMPS* lmp, int narg, char** arg) : Fix(lmp,
     }
     const char* val = arg[iarg + 1];
     if (key == "every") {
-      const double n = to_number(error, key, val);
+      const double n = keyword_number(error, "brash/farfield", key, val);
       if (n < 1 || n != std::floor(n) || n > 1e9) error->all(FLERR, "fix brash/farfield: 'every' must be an integer >= 1");
       every_ = static_cast<int>(n);
     } else if (key == "ahead") {
-      ahead_ = to_number(error, key, val), have_ahead_ = true;
+      ahead_ = keyword_number(error, "brash/farfield", key, val), have_ahead_ = true;
       if (ahead_ < 0) error->all(FLERR, "fix brash/farfield: 'ahead' must be >= 0");
     } else if (key == "behind") {
-      behind_ = to_number(error, key, val), have_behind_ = true;
+      behind_ = keyword_number(error, "brash/farfield", key, val), have_behind_ = true;
       if (behind_ < 0) error->all(FLERR, "fix brash/farfield: 'behind' must be >= 0");
-    } else if (key == "hull_x0") {
-      hull_x0_ = to_number(error, key, val), have_x0_ = true;
-    } else if (key == "speed") {
-      speed_ = to_number(error, key, val), have_speed_ = true;
-    } else if (key == "bow_offset") {
-      bow_offset_ = to_number(error, key, val), have_bow_ = true;
-    } else if (key == "stern_offset") {
-      stern_offset_ = to_number(error, key, val), have_stern_ = true;
+    } else if (HullTrack::keyword(key)) {
+      track_.take(key, keyword_number(error, "brash/farfield", key, val));
     } else if (key == "wake_speed") {
-      wake_speed_ = to_number(error, key, val);
+      wake_speed_ = keyword_number(error, "brash/farfield", key, val);
       if (wake_speed_ < 0) error->all(FLERR, "fix brash/farfield: 'wake_speed' must be >= 0");
     } else if (key == "wake_force") {
-      wake_force_ = to_number(error, key, val), have_wake_force_ = true;
+      wake_force_ = keyword_number(error, "brash/farfield", key, val), have_wake_force_ = true;
       if (wake_force_ < 0) error->all(FLERR, "fix brash/farfield: 'wake_force' must be >= 0");
     } else if (key == "wake_neighbour_speed") {
-      wake_speed_ = to_number(error, key, val), by_neighbour_ = true;
+      wake_speed_ = keyword_number(error, "brash/farfield", key, val), by_neighbour_ = true;
       if (!(wake_speed_ > 0)) error->all(FLERR, "fix brash/farfield: 'wake_neighbour_speed' must be > 0");
     } else if (key == "active") {
       active_name_ = val;
@@ -84,10 +65,11 @@ FixBrashFarfield::FixBrashFarfield(LAMMPS* lmp, int narg, char** arg) : Fix(lmp,
     }
     iarg += 2;
   }
-  if (!(have_ahead_ && have_behind_ && have_x0_ && have_speed_ && have_bow_ && have_stern_))
+  if (!(have_ahead_ && have_behind_ && track_.complete()))
     error->all(FLERR,
                "fix brash/farfield: keywords ahead, behind, hull_x0, speed, bow_offset and stern_offset are required");
-  if (stern_offset_ > bow_offset_) error->all(FLERR, "fix brash/farfield: stern_offset must be <= bow_offset");
+  if (track_.stern_offset_m > track_.bow_offset_m)
+    error->all(FLERR, "fix brash/farfield: stern_offset must be <= bow_offset");
   if (by_neighbour_ && have_wake_force_)
     error->all(FLERR, "fix brash/farfield: give either wake_force (with wake_speed) or wake_neighbour_speed, not both");
   const int ia = group->find(active_name_.c_str()), ii = group->find(idle_name_.c_str());
@@ -236,8 +218,8 @@ int FixBrashFarfield::mark_touched_by_fast_pieces() {
 
 void FixBrashFarfield::update_membership(bool setup) {
   const double t = static_cast<double>(update->ntimestep) * update->dt;
-  const double bow = hull_x0_ + bow_offset_ + speed_ * t, stern = hull_x0_ + stern_offset_ + speed_ * t;
-  const brash::core::FarFieldWindow window = brash::core::far_field_window(stern, bow, behind_, ahead_);
+  const brash::core::FarFieldWindow window =
+      brash::core::far_field_window(track_.stern_x_m(t), track_.bow_x_m(t), behind_, ahead_);
   const brash::core::WakeRule rule = wake_rule();
   double** x = atom->x;
   double** v = atom->v;

@@ -45,6 +45,7 @@
 
 #include "brash/core/far_field.hpp"
 #include "fix.h"
+#include "fix_support.h"
 
 namespace brash::liggghts {
 
@@ -74,11 +75,11 @@ class FixBrashFarfield : public LAMMPS_NS::Fix {
   LAMMPS_NS::bigint next_update_ = 0;
 
   int every_ = 100;
-  double ahead_ = 1.0, behind_ = 1.0, hull_x0_ = 0.0, speed_ = 0.0, bow_offset_ = 0.0, stern_offset_ = 0.0;
+  double ahead_ = 1.0, behind_ = 1.0;
+  HullTrack track_;
   int active_bit_ = 0, idle_bit_ = 0;
   std::string active_name_ = "active", idle_name_ = "idle";
-  bool have_ahead_ = false, have_behind_ = false, have_x0_ = false, have_speed_ = false, have_bow_ = false,
-       have_stern_ = false;
+  bool have_ahead_ = false, have_behind_ = false;
   double wake_speed_ = 0;           // m/s; 0: no speed test
   double wake_force_ = 0;           // N; 0: idle pieces never wake by force
   bool have_wake_force_ = false;

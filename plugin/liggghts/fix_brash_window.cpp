@@ -19,6 +19,7 @@
 #include "domain.h"
 #include "error.h"
 #include "fix_brash_exit.h"
+#include "fix_support.h"
 #include "modify.h"
 #include "update.h"
 
@@ -29,16 +30,6 @@ namespace brash::liggghts {
 namespace {
 
 constexpr double kNoFront = -std::numeric_limits<double>::infinity();
-
-double to_number(Error* error, const std::string& keyword, const char* text) {
-  char* end = nullptr;
-  const double v = std::strtod(text, &end);
-  if (end == text || *end != '\0' || !std::isfinite(v))
-    error->all(
-        FLERR,
-        fmt::format("fix brash/window: keyword '{}' expects a number, got '{}'", keyword, text).c_str());
-  return v;
-}
 
 // The fixes of a style, by index in the fix list (-1: none).
 int fix_index(Modify* modify, const char* style) {
@@ -55,7 +46,8 @@ FixBrashWindow::FixBrashWindow(LAMMPS* lmp, int narg, char** arg)
     const std::string key = arg[iarg];
     if (iarg + 1 >= narg)
       error->all(FLERR, fmt::format("fix brash/window: keyword '{}' needs a value", key).c_str());
-    const double v = to_number(error, key, arg[iarg + 1]);
+    const double v = keyword_number(error, "brash/window", key, arg[iarg + 1]);
+    if (track_.take(key, v)) continue;
     if (key == "every") {
       if (v < 1 || v != std::floor(v) || v > 1e9)
         error->all(FLERR, "fix brash/window: 'every' must be an integer >= 1");
@@ -64,14 +56,6 @@ FixBrashWindow::FixBrashWindow(LAMMPS* lmp, int narg, char** arg)
       ahead_ = v, have_ahead_ = true;
     } else if (key == "behind") {
       behind_ = v, have_behind_ = true;
-    } else if (key == "hull_x0") {
-      hull_x0_ = v, have_x0_ = true;
-    } else if (key == "speed") {
-      speed_ = v, have_speed_ = true;
-    } else if (key == "bow_offset") {
-      bow_offset_ = v, have_bow_ = true;
-    } else if (key == "stern_offset") {
-      stern_offset_ = v, have_stern_ = true;
     } else if (key == "moving_speed") {
       moving_speed_ = v;
     } else {
@@ -82,14 +66,15 @@ FixBrashWindow::FixBrashWindow(LAMMPS* lmp, int narg, char** arg)
                             .c_str());
     }
   }
-  if (!(have_ahead_ && have_behind_ && have_x0_ && have_speed_ && have_bow_ && have_stern_))
+  if (!(have_ahead_ && have_behind_ && track_.complete()))
     error->all(
         FLERR,
         "fix brash/window: keywords ahead, behind, hull_x0, speed, bow_offset and stern_offset are required");
   if (!(ahead_ > 0) || !(behind_ > 0))
     error->all(FLERR, "fix brash/window: 'ahead' and 'behind' must be > 0");
   if (!(moving_speed_ > 0)) error->all(FLERR, "fix brash/window: 'moving_speed' must be > 0");
-  if (stern_offset_ > bow_offset_) error->all(FLERR, "fix brash/window: stern_offset must be <= bow_offset");
+  if (track_.stern_offset_m > track_.bow_offset_m)
+    error->all(FLERR, "fix brash/window: stern_offset must be <= bow_offset");
   if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag)
     error->all(FLERR, "fix brash/window requires atom_style granular/sphere (radius, mass, omega)");
   if (!atom->tag_enable) error->all(FLERR, "fix brash/window requires atom ids");
@@ -116,7 +101,7 @@ void FixBrashWindow::init() {
   exit_ = exit >= 0 ? static_cast<FixBrashExit*>(modify->fix[exit]) : nullptr;
 }
 
-double FixBrashWindow::front_now(double t_s) const {
+brash::core::MovingWindow FixBrashWindow::window_now(double t_s) const {
   double foremost_local = kNoFront, foremost = kNoFront;
   double** x = atom->x;
   double** v = atom->v;
@@ -125,15 +110,15 @@ double FixBrashWindow::front_now(double t_s) const {
     if ((atom->mask[i] & groupbit) && v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2] > v2)
       foremost_local = std::max(foremost_local, x[i][0]);
   MPI_Allreduce(&foremost_local, &foremost, 1, MPI_DOUBLE, MPI_MAX, world);
-  const double bow = hull_x0_ + bow_offset_ + speed_ * t_s, stern = hull_x0_ + stern_offset_ + speed_ * t_s;
-  return brash::core::moving_window(stern, bow, foremost, front_x_m_, behind_, ahead_).insert_below_x_m;
+  return brash::core::moving_window(track_.stern_x_m(t_s), track_.bow_x_m(t_s), foremost, front_x_m_, behind_,
+                                    ahead_);
 }
 
 // A run's set-up: hold out what lies beyond the front (once: a resumed run has its list from the restart
 // file).
 void FixBrashWindow::setup_pre_exchange() {
   const double t = static_cast<double>(update->ntimestep) * update->dt;
-  front_x_m_ = front_now(t);
+  front_x_m_ = window_now(t).insert_below_x_m;
   if (!holding_started_) {
     hold_out_beyond(front_x_m_);
     holding_started_ = true;  // a second `run` in the same input keeps the list
@@ -144,10 +129,9 @@ void FixBrashWindow::setup_pre_exchange() {
 
 void FixBrashWindow::pre_exchange() {
   if (update->ntimestep >= next_update_) {
-    const double t = static_cast<double>(update->ntimestep) * update->dt;
-    front_x_m_ = front_now(t);
-    const double stern = hull_x0_ + stern_offset_ + speed_ * t;
-    const long long removed = remove_behind(stern - behind_);
+    const brash::core::MovingWindow window = window_now(static_cast<double>(update->ntimestep) * update->dt);
+    front_x_m_ = window.insert_below_x_m;
+    const long long removed = remove_behind(window.remove_below_x_m);
     const long long inserted = insert_before(front_x_m_);
     atoms_changed(inserted - removed);
     next_update_ = update->ntimestep + every_;
@@ -157,28 +141,16 @@ void FixBrashWindow::pre_exchange() {
 
 void FixBrashWindow::hold_out_beyond(double front_x_m) {
   std::vector<double> mine;
-  int n = atom->nlocal;
-  for (int i = 0; i < n;) {
-    double* xi = atom->x[i];
-    if ((atom->mask[i] & groupbit) && xi[0] >= front_x_m) {
-      const HeldPiece p{static_cast<double>(atom->tag[i]),
-                        static_cast<double>(atom->type[i]),
-                        static_cast<double>(atom->mask[i]),
-                        xi[0],
-                        xi[1],
-                        xi[2],
-                        atom->radius[i],
-                        atom->rmass[i],
-                        atom->density_flag ? atom->density[i] : 0.0};
-      const double* d = &p.tag;
-      mine.insert(mine.end(), d, d + kDoublesPerPiece);
-      atom->avec->copy(n - 1, i, 1);  // the last local atom takes slot i (i is checked again)
-      --n;
-    } else {
-      ++i;
-    }
-  }
-  atom->nlocal = n;
+  delete_local_atoms(atom, [&](int i) {
+    const double* xi = atom->x[i];
+    if (!(atom->mask[i] & groupbit) || xi[0] < front_x_m) return false;
+    const HeldPiece p{static_cast<double>(atom->tag[i]), static_cast<double>(atom->type[i]),
+                      static_cast<double>(atom->mask[i]), xi[0], xi[1], xi[2], atom->radius[i], atom->rmass[i],
+                      atom->density_flag ? atom->density[i] : 0.0};
+    const double* d = &p.tag;
+    mine.insert(mine.end(), d, d + kDoublesPerPiece);
+    return true;
+  });
   const int nprocs = comm->nprocs;
   std::vector<int> counts(nprocs), displs(nprocs, 0);
   const int count = static_cast<int>(mine.size());
@@ -233,18 +205,8 @@ long long FixBrashWindow::insert_before(double front_x_m) {
 }
 
 long long FixBrashWindow::remove_behind(double x_m) {
-  int n = atom->nlocal;
-  long long mine = 0;
-  for (int i = 0; i < n;) {
-    if ((atom->mask[i] & groupbit) && atom->x[i][0] < x_m) {
-      atom->avec->copy(n - 1, i, 1);
-      --n;
-      ++mine;
-    } else {
-      ++i;
-    }
-  }
-  atom->nlocal = n;
+  const long long mine =
+      delete_local_atoms(atom, [&](int i) { return (atom->mask[i] & groupbit) && atom->x[i][0] < x_m; });
   long long all = 0;
   MPI_Allreduce(&mine, &all, 1, MPI_LONG_LONG, MPI_SUM, world);
   removed_ += static_cast<double>(all);
@@ -254,13 +216,7 @@ long long FixBrashWindow::remove_behind(double x_m) {
 // natoms and the atom map as LIGGGHTS' own insertion and deletion leave them; fix brash/exit is told.
 void FixBrashWindow::atoms_changed(long long change) {
   if (change == 0) return;
-  bigint nlocal = atom->nlocal;
-  MPI_Allreduce(&nlocal, &atom->natoms, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  if (atom->map_style) {
-    atom->nghost = 0;
-    atom->map_init();
-    atom->map_set();
-  }
+  recount_atoms(atom, world);
   if (exit_) exit_->expect_atoms(change);
 }
 

@@ -27,7 +27,9 @@
 
 #include <vector>
 
+#include "brash/core/far_field.hpp"
 #include "fix.h"
+#include "fix_support.h"
 
 namespace brash::liggghts {
 
@@ -52,17 +54,17 @@ class FixBrashWindow : public LAMMPS_NS::Fix {
   };
   static constexpr int kDoublesPerPiece = sizeof(HeldPiece) / sizeof(double);
 
-  double front_now(double t_s) const;
+  brash::core::MovingWindow window_now(double t_s) const;  // at model time t; the front from all ranks
   void hold_out_beyond(double front_x_m);
   long long insert_before(double front_x_m);
   long long remove_behind(double x_m);
   void atoms_changed(long long change);
 
   int every_ = 100;
-  double ahead_ = 1.0, behind_ = 2.0, hull_x0_ = 0.0, speed_ = 0.0, bow_offset_ = 0.0, stern_offset_ = 0.0;
+  double ahead_ = 1.0, behind_ = 2.0;
+  HullTrack track_;
   double moving_speed_ = 0.005;
-  bool have_ahead_ = false, have_behind_ = false, have_x0_ = false, have_speed_ = false, have_bow_ = false,
-       have_stern_ = false;
+  bool have_ahead_ = false, have_behind_ = false;
   FixBrashExit* exit_ = nullptr;
   LAMMPS_NS::bigint next_update_ = 0;
 
