@@ -133,7 +133,7 @@ void FixBrashWindow::pre_exchange() {
     front_x_m_ = window.insert_below_x_m;
     const long long removed = remove_behind(window.remove_below_x_m);
     const long long inserted = insert_before(front_x_m_);
-    atoms_changed(inserted - removed);
+    atoms_changed(inserted, removed);
     next_update_ = update->ntimestep + every_;
   }
   next_reneighbor = next_update_;
@@ -165,7 +165,7 @@ void FixBrashWindow::hold_out_beyond(double front_x_m) {
     return a.x < b.x || (a.x == b.x && a.tag < b.tag);
   });
   next_held_ = 0;
-  atoms_changed(-static_cast<long long>(held_.size()));
+  atoms_changed(0, static_cast<long long>(held_.size()));
 }
 
 long long FixBrashWindow::insert_before(double front_x_m) {
@@ -214,10 +214,10 @@ long long FixBrashWindow::remove_behind(double x_m) {
 }
 
 // natoms and the atom map as LIGGGHTS' own insertion and deletion leave them; fix brash/exit is told.
-void FixBrashWindow::atoms_changed(long long change) {
-  if (change == 0) return;
+void FixBrashWindow::atoms_changed(long long added, long long deleted) {
+  if (added == 0 && deleted == 0) return;  // as many in as out still moves atoms: the map is rebuilt then too
   recount_atoms(atom, world);
-  if (exit_) exit_->expect_atoms(change);
+  if (exit_) exit_->expect_atoms(added - deleted);
 }
 
 double FixBrashWindow::compute_vector(int i) {

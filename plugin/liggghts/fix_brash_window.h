@@ -58,7 +58,7 @@ class FixBrashWindow : public LAMMPS_NS::Fix {
   void hold_out_beyond(double front_x_m);
   long long insert_before(double front_x_m);
   long long remove_behind(double x_m);
-  void atoms_changed(long long change);
+  void atoms_changed(long long added, long long deleted);  // on every rank, counts from all ranks
 
   int every_ = 100;
   double ahead_ = 1.0, behind_ = 2.0;
