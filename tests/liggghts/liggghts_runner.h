@@ -1,6 +1,8 @@
 // Test helper: run brash-liggghts on an input script in a fresh directory (1 or N MPI ranks) and read
 // whitespace-separated numeric output files back.
 #pragma once
+#include <fmt/format.h>
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -53,6 +55,12 @@ inline constexpr char kGranularPreamble[] =
     "newton off\n"
     "communicate single vel yes\n"
     "units si\n";
+
+// The preamble and a box x in [-0.1, x_hi], |y| < 0.5, |z| < 0.1 (one atom type); 2 ranks split it along x.
+inline std::string box_along_x(double x_hi, int ranks) {
+  return fmt::format("{}{}region reg block -0.1 {} -0.5 0.5 -0.1 0.1 units box\ncreate_box 1 reg\n", kGranularPreamble,
+                     ranks > 1 ? "processors 2 1 1\n" : "", x_hi);
+}
 
 // Material and contact lines of a one-material (type 1) ice scene: Hertz with history, E 5 MPa,
 // Poisson 0.3, restitution 0.3 and the given friction. Must follow create_box / read_restart.

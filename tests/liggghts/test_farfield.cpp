@@ -23,17 +23,8 @@ constexpr int kSteps = 1000;
 // window at time t: x in [U t + stern - behind, U t + bow + ahead] with stern 0, bow 0.1, ahead 0.2, behind 0.1
 constexpr double kAhead = 0.2, kBehind = 0.1, kBow = 0.1;
 
-// granular box x in [-0.1, x_hi], |y| < 0.5, |z| < 0.1; 2 ranks split it along x
-std::string box_header(double x_hi, int ranks) {
-  return fmt::format(R"({preamble}{procs}region reg block -0.1 {x_hi} -0.5 0.5 -0.1 0.1 units box
-create_box 1 reg
-)",
-                     fmt::arg("preamble", brash::test::kGranularPreamble),
-                     fmt::arg("procs", ranks > 1 ? "processors 2 1 1\n" : ""), fmt::arg("x_hi", x_hi));
-}
-
 std::string scene(bool farfield, int ranks) {
-  std::string s = box_header(1.1, ranks);
+  std::string s = brash::test::box_along_x(1.1, ranks);
   // 20 separated spheres (ids 1..20) at x = 0.025 + 0.05 k, then three touching pairs (ids 21..26):
   // at x = 0.05 (active, then left behind), 0.6 (idle, then reached), 0.95 (idle throughout).
   for (int k = 0; k < 20; ++k) s += fmt::format("create_atoms 1 single {} 0 0 units box\n", 0.025 + 0.05 * k);
@@ -163,7 +154,7 @@ std::string wake_keywords(Chain mode) {
 }
 
 std::string chain_scene(Chain mode, int ranks) {
-  std::string s = box_header(0.5, ranks);
+  std::string s = brash::test::box_along_x(0.5, ranks);
   for (int k = 0; k < kChain; ++k) s += fmt::format("create_atoms 1 single {} 0 0 units box\n", 0.01 + kD * k);
   s += "create_atoms 1 single 0.4 0.3 0 units box\ncreate_atoms 1 single 0.4 -0.3 0 units box\n";
   s += fmt::format(R"(set group all diameter {d} density 900
@@ -248,7 +239,7 @@ namespace {
 constexpr int kSettleSteps = 20000, kLoadedSteps = 2000;
 
 std::string loaded_chain_scene(Chain mode) {
-  std::string s = box_header(0.5, 1);
+  std::string s = brash::test::box_along_x(0.5, 1);
   for (int k = 0; k < kChain; ++k) s += fmt::format("create_atoms 1 single {} 0 0 units box\n", 0.01 + kD * k);
   s += fmt::format(R"(set group all diameter {d} density 900
 group pusher id 1

@@ -55,13 +55,8 @@ std::string window_fixes(Mode mode) {
       kAhead, kBehind, kU);
 }
 
-std::string box_header(int ranks) {
-  return fmt::format("{}{}region reg block -0.1 1.1 -0.5 0.5 -0.1 0.1 units box\ncreate_box 1 reg\n",
-                     brash::test::kGranularPreamble, ranks > 1 ? "processors 2 1 1\n" : "");
-}
-
 std::string scene(Mode mode, int ranks) {
-  std::string s = box_header(ranks);
+  std::string s = brash::test::box_along_x(1.1, ranks);
   for (int k = 0; k < kChain; ++k)
     s += fmt::format("create_atoms 1 single {} 0 0 units box\n", kChainX0 + kD * k);
   for (int k = 0; k < kRow; ++k)
@@ -221,7 +216,7 @@ TEST(LiggghtsWindow, OrderAndArgumentsAreChecked) {
 // they stay where they were while a force pulls every active piece down; the moving piece stays active.
 TEST(LiggghtsWindow, HeldOutIdlePiecesEnterIdle) {
   const auto dir = fresh_dir("window_farfield");
-  std::string s = box_header(1);
+  std::string s = brash::test::box_along_x(1.1, 1);
   for (int k = 0; k < kRow; ++k) s += fmt::format("create_atoms 1 single {} 0.2 0 units box\n", kRowX0 + kRowDx * k);
   s += fmt::format("create_atoms 1 single {} -0.3 0 units box\n", kMoverX0);
   s += fmt::format(R"(set group all diameter {d} density 900
