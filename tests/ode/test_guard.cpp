@@ -1,7 +1,8 @@
 // brash-ode's run-time guards (docs/stability.md, "Run-time guards") on the YADE smoke case (720 spheres of
 // 35 mm ice at the JBC bow, the contact hull a waterline band): each guard stops the run with
 // "guard: step N (t = T s): piece ID: cause" on stderr and as meta.json's reason, status "failed", and the
-// outputs up to the stop readable; a normal run trips none of them.
+// outputs up to the stop readable; a normal run trips none of them. Also what a run starts from or refuses: the case
+// keys only LIGGGHTS carries out, the settled bed, another run's particle dump (bench-ode --scene-from).
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -10,7 +11,16 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <fmt/format.h>
+
+#include <iomanip>
+#include <nlohmann/json.hpp>
 #include <string>
+
+#include "brash/case.hpp"
+#include "brash/core/params.hpp"
+#include "brash/packing.hpp"
+#include "brash/settle.hpp"
 
 namespace fs = std::filesystem;
 
@@ -168,17 +178,16 @@ TEST_F(OdeGuard, HullFlowRunsWithDragAndIsRefusedWithAddedMass) {
 }
 
 // Keys only LIGGGHTS carries out are refused by name before any output, not run as the whole channel with
-// every piece awake: the settled bed, the half channel, the idle far field and the moving window.
+// every piece awake: the half channel, the idle far field and the moving window.
 TEST_F(OdeGuard, KeysOnlyLiggghtsCarriesOutAreRefusedByName) {
   const struct {
     const char* name;
     const char* from;
     const char* to;
     const char* key;
-  } cases[] = {{"settle", "\nice:\n", "\nice:\n  settle: true\n", "ice.settle: true"},
-               {"symmetry", "\nrun:\n", "\nspeedups:\n  symmetry_y: true\nrun:\n", "speedups.symmetry_y: true"},
+  } cases[] = {{"symmetry", "\nrun:\n", "\nspeedups:\n  symmetry_y: true\nrun:\n", "speedups.symmetry_y: true"},
                {"farfield", "\nrun:\n", "\nspeedups:\n  farfield: true\nrun:\n", "speedups.farfield: true"},
-               // (the moving window needs the settled bed: both are named)
+               // (the moving window needs the settled bed, which brash-ode runs: only the window is named)
                {"window", "\nice:\n", "\nspeedups:\n  moving_window: true\nice:\n  settle: true\n",
                 "speedups.moving_window: true"}};
   for (const auto& c : cases) {
@@ -193,11 +202,86 @@ TEST_F(OdeGuard, KeysOnlyLiggghtsCarriesOutAreRefusedByName) {
         << r.err;
     EXPECT_FALSE(fs::exists(r.run / "meta.json")) << c.name;  // refused before any output
   }
-  // the paper case's switches together: one message names both and the one copy to run
-  const auto r =
-      run(make_case("refused_both", "\nice:\n", "\nspeedups:\n  farfield: true\nice:\n  settle: true\n", ""), "0.1");
+  // the paper case's switches together: one message names both refused keys and the one copy to run; the settled
+  // bed is kept
+  const auto r = run(make_case("refused_both", "\nice:\n",
+                               "\nspeedups:\n  farfield: true\n  moving_window: true\nice:\n  settle: true\n", ""),
+                     "0.1");
   EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_NE(r.err.find("--set ice.settle=false --set speedups.farfield=false --out DIR"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--set speedups.farfield=false --set speedups.moving_window=false --out DIR"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("ice.settle"), std::string::npos) << r.err;
+}
+
+// The settled bed (ice.settle) runs on ODE with a contact surface layer as deep as its largest overlap (deeper
+// with a larger --surface-layer), named in the log and meta.json; the packing runs with none. The bed here is the
+// smoke packing drawn 0.5 % closer to its centroid, written where the run looks for the cached settled bed.
+TEST_F(OdeGuard, SettledBedRunsWithASurfaceLayerAsDeepAsItsLargestOverlap) {
+  const fs::path dir = make_case("settled", "\nice:\n", "\nice:\n  settle: true\n", "");
+  const brash::Case c = brash::load_case(dir / "case.yaml");
+  const auto rows = brash::read_packing_csv(c.ice.packing_file);
+  brash::core::Vec3 centroid = brash::core::Vec3::Zero();
+  for (const auto& p : rows) centroid += brash::core::Vec3(p.x_m, p.y_m, p.z_m) / double(rows.size());
+  std::vector<brash::core::Vec3> x;
+  for (const auto& p : rows) x.push_back(centroid + 0.995 * (brash::core::Vec3(p.x_m, p.y_m, p.z_m) - centroid));
+  double largest = 0;
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    for (std::size_t j = i + 1; j < rows.size(); ++j)
+      largest = std::max(largest, 0.5 * (rows[i].diameter_m + rows[j].diameter_m) - (x[i] - x[j]).norm());
+  ASSERT_GT(largest, 1e-3 * c.ice.diameter_mean_m);
+  {
+    std::ofstream bed(brash::settled_packing_file(c));
+    bed << "# a settled bed for the test\nid,x,y,z,diameter\n" << std::setprecision(17);
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      bed << i + 1 << "," << x[i].x() << "," << x[i].y() << "," << x[i].z() << "," << rows[i].diameter_m << "\n";
+  }
+  const auto layer_in = [](const std::string& meta) {
+    const auto j = nlohmann::json::parse(meta, nullptr, false);
+    return j.is_object() ? j["stepper"].value("contact_surface_layer_m", -1.0) : -1.0;
+  };
+  const auto settled = run(dir, "0.02");
+  ASSERT_EQ(settled.exit_code, 0) << settled.err;
+  EXPECT_NEAR(layer_in(settled.meta), largest, 1e-12);
+  EXPECT_NE(slurp(settled.run / "log.txt").find("settled bed: contact surface layer"), std::string::npos);
+  const auto packing = run(make_case("packing", "", "", ""), "0.02");
+  ASSERT_EQ(packing.exit_code, 0) << packing.err;
+  EXPECT_EQ(layer_in(packing.meta), 0.0);
+}
+
+// bench-ode --scene-from starts from another run's particle dump (its pieces, with their velocities) with the hull
+// where it was at --scene-time; a dump without a needed column is refused naming the file and the column.
+TEST_F(OdeGuard, SceneFromADumpStartsWithItsPiecesAndTheHullWhereItWas) {
+  const fs::path dir = make_case("scene", "", "", "");
+  const brash::Case c = brash::load_case(dir / "case.yaml");
+  const auto rows = brash::read_packing_csv(c.ice.packing_file);
+  const fs::path dump = dir.parent_path() / "particles_0000001000.csv";
+  {
+    std::ofstream out(dump);
+    out << "id,x,y,z,radius,vx,vy,vz,submerged_fraction\n" << std::setprecision(17);
+    // 20 fewer pieces than the packing, where the hull finds them after 0.5 s
+    for (std::size_t i = 0; i + 20 < rows.size(); ++i)
+      out << i + 1 << "," << rows[i].x_m + 0.5 * c.ship.speed_m_s << "," << rows[i].y_m << "," << rows[i].z_m << "," << 0.5 * rows[i].diameter_m
+          << ",0.01,0,0,1\n";
+  }
+  const fs::path out = dir.parent_path() / "run", err = dir.parent_path() / "stderr.txt";
+  const auto bench = [&](const fs::path& file) {
+    const std::string cmd = std::string("'") + BRASH_BENCH_ODE_EXE + "' '" + dir.string() + "' --scene-from '" +
+                            file.string() + "' --scene-time 0.5 --duration 0.02 --out '" + out.string() +
+                            "' > /dev/null 2> '" + err.string() + "'";
+    const int st = std::system(cmd.c_str());
+    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  };
+  ASSERT_EQ(bench(dump), 0) << slurp(err);
+  const std::string log = slurp(out / "log.txt");
+  EXPECT_NE(log.find(fmt::format("at t = 0.5 s of its run: {} pieces, hull at x = {:.4g} m", rows.size() - 20,
+                                 c.hull.start_x_m + 0.5 * c.ship.speed_m_s)),
+            std::string::npos)
+      << log;
+  // the pieces start with the dump's velocity (0.01 m/s along x): the first dump holds it
+  EXPECT_NE(slurp(out / "particles" / "particles_0.csv").find(",0.01,0,0,"), std::string::npos);
+  std::ofstream(dump) << "id,x,y,z,diameter\n1,0,0,0,0.035\n";
+  EXPECT_EQ(bench(dump), 2);  // an input error, before any output
+  EXPECT_NE(slurp(err).find(dump.string() + ":1: no column \"radius\""), std::string::npos) << slurp(err);
 }
 
 // The progress line names the model time to the case's step (here 4 decimals), the wall time and the contacts:

@@ -1,5 +1,5 @@
 // bench-ode: particle-steps/s and wall time per simulated second of brash-ode on a case (not a test).
-//   bench-ode CASE_DIR [--duration 0.5] [brash-ode options]
+//   bench-ode CASE_DIR [--duration 0.5] [--scene-from DUMP.csv --scene-time T] [brash-ode options]
 // Also runs a synthetic floating lattice bed without hull (--bed N for N x N lower-layer spheres).
 #include <fmt/format.h>
 
@@ -22,6 +22,13 @@ int main(int argc, char** argv) {
   app.add_option("case_dir", o.case_dir, "case folder");
   app.add_option("--bed", bed, "synthetic bed: N x N spheres per layer, two layers, no hull (0 = off)");
   app.add_option("--bed-duration", bed_s, "simulated time of the synthetic bed [s]")->capture_default_str();
+  app.add_option("--scene-from", o.scene_from,
+                 "start from another run's particle dump (particles/*.csv: id,x,y,z,radius[,vx,vy,vz]) instead of "
+                 "the packing, to time a run's late scene")
+      ->check(CLI::ExistingFile);
+  app.add_option("--scene-time", o.scene_time_s,
+                 "with --scene-from: the dump's model time [s]; the hull starts where it was then")
+      ->check(CLI::NonNegativeNumber);
   brash::ode::add_run_options(app, o, implicit_mode);
   CLI11_PARSE(app, argc, argv);
   o.implicit_mode = brash::ode::parse_implicit_mode(implicit_mode);

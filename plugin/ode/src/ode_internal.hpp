@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "brash/case.hpp"
+#include "brash/core/params.hpp"
 #include "brash/ode/run_case.hpp"
 #include "brash/packing.hpp"
 
@@ -21,7 +22,15 @@ nlohmann::json options_json(const RunOptions& o);
 // The skips with --cull's wake rule in SI units: the case's unless given (brash/core/far_field.hpp).
 Skips cull_skips(const RunOptions& o, const Case& c);
 
-// Overlaps beyond tol (m) between spheres and through the side walls; InputError naming file and lines.
-void check_packing(const std::vector<Sphere>& s, const std::filesystem::path& file, double tol, double half_width);
+// Another run's particle dump (RunOptions::scene_from): its pieces and their velocities, in the file's order.
+struct SceneFromDump {
+  std::vector<Sphere> spheres;
+  std::vector<core::Vec3> velocity_m_s;
+};
+SceneFromDump read_scene_dump(const std::filesystem::path& file);
+
+// Overlaps beyond tol (m) between spheres and through the side walls; InputError naming file and lines. Returns the
+// largest overlap (m, 0 when none), of two spheres or of a sphere and a side wall.
+double check_packing(const std::vector<Sphere>& s, const std::filesystem::path& file, double tol, double half_width);
 
 }  // namespace brash::ode

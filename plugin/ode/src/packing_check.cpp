@@ -34,13 +34,14 @@ std::vector<int> packing_lines(const fs::path& file) {
   return lines;
 }
 
-// Overlaps beyond tol (m) between spheres and through the side walls; InputError naming file and lines.
-void check_packing(const std::vector<Sphere>& s, const fs::path& file, double tol, double half_width) {
+// Overlaps beyond tol (m) between spheres and through the side walls; InputError naming file and lines. Returns the
+// largest overlap (m, 0 when none), of two spheres or of a sphere and a side wall.
+double check_packing(const std::vector<Sphere>& s, const fs::path& file, double tol, double half_width) {
   const auto lines = packing_lines(file);
   auto where = [&](std::size_t i) {
     return fmt::format("{}:{}", file.string(), i < lines.size() ? lines[i] : static_cast<int>(i) + 1);
   };
-  double dmax = 0;
+  double dmax = 0, largest = 0;
   for (std::size_t i = 0; i < s.size(); ++i) {
     const auto& p = s[i];
     if (!std::isfinite(p.x_m) || !std::isfinite(p.y_m) || !std::isfinite(p.z_m) || !std::isfinite(p.diameter_m) ||
@@ -51,6 +52,7 @@ void check_packing(const std::vector<Sphere>& s, const fs::path& file, double to
                                    where(i), i + 1, p.y_m, p.diameter_m,
                                    std::abs(p.y_m) + 0.5 * p.diameter_m - half_width, half_width));
     dmax = std::max(dmax, p.diameter_m);
+    largest = std::max(largest, std::abs(p.y_m) + 0.5 * p.diameter_m - half_width);
   }
   // Uniform grid with cell = d_max: neighbours are in the 27 surrounding cells.
   auto key = [&](long a, long b, long c) { return (a * 73856093L) ^ (b * 19349663L) ^ (c * 83492791L); };
@@ -71,6 +73,7 @@ void check_packing(const std::vector<Sphere>& s, const fs::path& file, double to
             if (j <= i) continue;
             const double dx = s[i].x_m - s[j].x_m, dy = s[i].y_m - s[j].y_m, dz = s[i].z_m - s[j].z_m;
             const double overlap = 0.5 * (s[i].diameter_m + s[j].diameter_m) - std::sqrt(dx * dx + dy * dy + dz * dz);
+            largest = std::max(largest, overlap);
             if (overlap > tol) {
               ++nbad;
               if (bad.size() < 5)
@@ -87,6 +90,7 @@ void check_packing(const std::vector<Sphere>& s, const fs::path& file, double to
     for (const auto& b : bad) msg += "\n  " + b;
     throw InputError(msg);
   }
+  return largest;
 }
 
 }  // namespace brash::ode

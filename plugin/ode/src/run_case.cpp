@@ -26,6 +26,7 @@
 #include "brash/ode/restart.hpp"
 #include "brash/packing.hpp"
 #include "brash/run_layout.hpp"
+#include "brash/settle.hpp"
 #include "ode_internal.hpp"
 
 namespace brash::ode {
@@ -49,6 +50,8 @@ struct OdeEngine::Scene {
   std::unique_ptr<hull::Proximity> hull_query;  // the full closed hull, for the penetration guard
   bool hull_closed = false;
   core::FlowTable hull_flow;          // fluid.hull_flow from the full hull
+  bool surface_layer_from_bed = false;  // the contact surface layer is the settled bed's largest overlap
+  std::vector<Vec3> velocity_m_s;     // the pieces' starting velocities (--scene-from; empty: at rest)
 };
 
 OdeEngine::OdeEngine(RunOptions options) : options_(std::move(options)) {}
@@ -79,14 +82,35 @@ nlohmann::json OdeEngine::meta() const {
       {"resumes", nlohmann::json::array()}};
 }
 
-void OdeEngine::load(const Case& c, const fs::path& /*case_file*/, const std::vector<Sphere>& spheres) {
+void OdeEngine::load(const Case& case_in, const fs::path& /*case_file*/, const std::vector<Sphere>& packing) {
   const auto& st = options_.stepper;
   if (!(st.dt_s > 0) || !std::isfinite(st.dt_s)) throw InputError(fmt::format("--dt {}: must be > 0", st.dt_s));
-  if (spheres.empty()) throw InputError(c.ice.packing_file.string() + ": no spheres");
-  check_packing(spheres, c.ice.packing_file, options_.overlap_tolerance_over_d * c.ice.diameter_mean_m,
-                0.5 * c.channel.width_m);
   scene_ = std::make_unique<Scene>();
   Scene& s = *scene_;
+  Case c = case_in;
+  std::vector<Sphere> spheres = packing;
+  const bool from_dump = !options_.scene_from.empty();
+  if (from_dump) {  // another run's scene, with the hull where it was then
+    SceneFromDump dump = read_scene_dump(options_.scene_from);
+    spheres = std::move(dump.spheres);
+    s.velocity_m_s = std::move(dump.velocity_m_s);
+    c.hull.start_x_m += c.ship.speed_m_s * options_.scene_time_s;
+  }
+  const bool soft_bed = c.ice.settle || from_dump;
+  const fs::path bed_file = from_dump ? options_.scene_from : c.ice.settle ? settled_packing_file(c) : c.ice.packing_file;
+  if (spheres.empty()) throw InputError(bed_file.string() + ": no spheres");
+  const double tolerance_over_d = soft_bed ? kSettledBedMaxOverlapOverD : options_.overlap_tolerance_over_d;
+  const double largest_overlap_m =
+      check_packing(spheres, bed_file, tolerance_over_d * c.ice.diameter_mean_m, 0.5 * c.channel.width_m);
+  // The settled bed lies as LIGGGHTS' soft contacts left it, its pieces overlapping by up to ~1 % d. ODE's
+  // rigid contacts would push every overlap apart at ERP's pace, stirring the bed it is meant to start from at
+  // rest; a contact surface layer as deep as the largest overlap lets them lie (ODE corrects only the depth
+  // beyond the layer) and is itself a ~1 % d give of every contact.
+  if (soft_bed) {
+    double& layer_m = options_.stepper.contact_surface_layer;
+    layer_m = std::max(layer_m, largest_overlap_m);
+    s.surface_layer_from_bed = layer_m == largest_overlap_m;  // (not a larger --surface-layer)
+  }
   s.c = c;
   s.spheres = spheres;
   s.contact_mesh = hull::read_mesh(c.hull.file);
@@ -184,7 +208,8 @@ void Stepping::build_world() {
     std::iota(order_.begin(), order_.end(), std::size_t{0});
   }
   for (const std::size_t j : order_)
-    w_->add_sphere(centres[j], 0.5 * s_.spheres[j].diameter_m, c_.ice.density_kg_m3);
+    w_->add_sphere(centres[j], 0.5 * s_.spheres[j].diameter_m, c_.ice.density_kg_m3,
+                   s_.velocity_m_s.empty() ? Vec3::Zero() : s_.velocity_m_s[j]);
   std::vector<double> verts;
   std::vector<dTriIndex> tris;
   double hx0 = 1e300, hx1 = -1e300, hz0 = 1e300;
@@ -216,6 +241,14 @@ void Stepping::log_scene() {
                   to_string(c_.fluid.model), to_string(c_.fluid.treatment),
                   o_.implicit_mode == ImplicitMode::EffectiveMass ? "effective_mass" : "scale_forces",
                   to_string(c_.fluid.ca_table), c_.fluid.drag_coefficient, to_string(c_.fluid.drag_law)));
+  if (!o_.scene_from.empty())
+    log(fmt::format("scene from {} at t = {} s of its run: {} pieces, hull at x = {:.4g} m (pieces numbered in the "
+                    "file's order)",
+                    o_.scene_from.string(), o_.scene_time_s, s_.spheres.size(), c_.hull.start_x_m));
+  if (s_.surface_layer_from_bed)
+    log(fmt::format("{}: contact surface layer {:.3g} m ({:.2f} % d), its largest overlap, so that the "
+                    "bed lies as it was left",
+                    o_.scene_from.empty() ? "settled bed" : "scene", st.contact_surface_layer, 100 * st.contact_surface_layer / c_.ice.diameter_mean_m));
   log(fmt::format("run dir {}", run_dir_.string()));
   log(fmt::format("guards every {} steps: NaN/Inf; box x [{:.4g}, {:.4g}] y [{:.4g}, {:.4g}] z [{:.4g}, {:.4g}] m; "
                   "zmax {:.4g} m; ke_max {:.4g} J; hull penetration {}; pieces beyond the x range leave the scene; "

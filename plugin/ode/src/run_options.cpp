@@ -56,7 +56,55 @@ nlohmann::json options_json(const RunOptions& o) {
           {"end_walls", o.end_walls},
           {"settle_s", o.settle_s},
           {"overlap_tolerance_over_d", o.overlap_tolerance_over_d},
-          {"restart_every_s", o.restart_every_s}};
+          {"restart_every_s", o.restart_every_s},
+          {"scene_from", o.scene_from.empty() ? std::string() : fs::absolute(o.scene_from).lexically_normal().string()},
+          {"scene_time_s", o.scene_time_s}};
+}
+
+// A particle dump (particles/*.csv of any engine's run: a header naming id,x,y,z,radius and optionally vx,vy,vz):
+// the pieces in the file's order with their velocities (zero without the columns). InputError naming file, line
+// and column.
+SceneFromDump read_scene_dump(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) throw InputError(fmt::format("--scene-from {}: cannot be read", file.string()));
+  std::string line;
+  int ln = 0;
+  std::unordered_map<std::string, std::size_t> col;
+  while (std::getline(in, line)) {
+    ++ln;
+    if (line.empty() || line[0] == '#') continue;
+    std::stringstream ss(line);
+    std::string name;
+    for (std::size_t i = 0; std::getline(ss, name, ','); ++i) col[name] = i;
+    break;
+  }
+  for (const char* need : {"x", "y", "z", "radius"})
+    if (!col.count(need))
+      throw InputError(fmt::format("{}:{}: no column \"{}\" in the header (a particle dump: id,x,y,z,radius,vx,vy,vz)",
+                                   file.string(), ln, need));
+  const bool has_v = col.count("vx") && col.count("vy") && col.count("vz");
+  SceneFromDump out;
+  std::vector<double> v;
+  while (std::getline(in, line)) {
+    ++ln;
+    if (line.empty() || line[0] == '#') continue;
+    v.clear();
+    std::stringstream ss(line);
+    std::string cell;
+    while (std::getline(ss, cell, ',')) {
+      char* end = nullptr;
+      v.push_back(std::strtod(cell.c_str(), &end));
+      if (end == cell.c_str() || !std::isfinite(v.back()))
+        throw InputError(fmt::format("{}:{}: \"{}\" is not a finite number", file.string(), ln, cell));
+    }
+    if (v.size() < col.size()) throw InputError(fmt::format("{}:{}: {} values, the header names {}", file.string(), ln, v.size(), col.size()));
+    const double r = v[col["radius"]];
+    if (!(r > 0)) throw InputError(fmt::format("{}:{}: radius {} is not > 0", file.string(), ln, r));
+    out.spheres.push_back({v[col["x"]], v[col["y"]], v[col["z"]], 2 * r});
+    out.velocity_m_s.emplace_back(has_v ? v[col["vx"]] : 0.0, has_v ? v[col["vy"]] : 0.0, has_v ? v[col["vz"]] : 0.0);
+  }
+  if (out.spheres.empty()) throw InputError(fmt::format("{}: no pieces", file.string()));
+  return out;
 }
 
 // The skips with --cull's wake rule in SI units: the case's unless given (brash/core/far_field.hpp).
@@ -118,6 +166,8 @@ RunOptions options_from_meta(const fs::path& run_dir, const RunOptions& cli) {
     o.settle_s = j.at("settle_s");
     o.overlap_tolerance_over_d = j.at("overlap_tolerance_over_d");
     o.restart_every_s = j.at("restart_every_s");
+    o.scene_from = j.value("scene_from", std::string());  // runs before the option: from their packing
+    o.scene_time_s = j.value("scene_time_s", 0.0);
   } catch (const nlohmann::json::exception& e) {
     throw InputError(fmt::format("{}: ode_options: {}", mf.string(), e.what()));
   }

@@ -38,6 +38,11 @@ struct RunOptions {
   bool progress = true;                // the engine's own lines on stderr (the driver prints progress)
   double overlap_tolerance_over_d = 1e-4;  // packing overlaps beyond this fraction of d_mean are errors
   double restart_every_s = 0.1;        // simulated time between restart files (0 = none)
+  // bench-ode --scene-from: the pieces of another run's particle dump (id,x,y,z,radius,vx,vy,vz: any engine's
+  // particles/ file) instead of the packing, and the hull where it was scene_time_s into that run, to time the
+  // ODE step on a run's late scene (pieces numbered in the file's order; not for a resistance)
+  std::filesystem::path scene_from;
+  double scene_time_s = 0;
   long stop_after_step = -1;           // testing: raise SIGTERM during this step (a stop request, handled)
   long crash_after_step = -1;          // testing: std::_Exit(137) right after this step (a kill -9: no cleanup)
 };
@@ -63,6 +68,8 @@ class OdeEngine final : public run::Engine {
   std::string name() const override { return "ode"; }
   std::string runner() const override { return "brash-ode"; }
   nlohmann::json meta() const override;
+  // The settled bed with a contact surface layer as deep as its largest overlap (load()).
+  bool starts_from_settled_bed() const override { return true; }
   void load(const Case& c, const std::filesystem::path& case_file, const std::vector<Sphere>& spheres) override;
   void write_scene(const std::filesystem::path&, bool) override {}  // the scene lives in this process
   std::vector<std::string> restarts(const std::filesystem::path& run_dir) const override;
