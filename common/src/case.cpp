@@ -441,12 +441,16 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
   }
   {  // speedups (docs/performance.md)
     const auto s = r.section(root, "speedups",
-                             {"farfield", "farfield_ahead_m", "farfield_behind_m", "farfield_every_steps",
+                             {"farfield", "farfield_ahead_m", "farfield_behind_m", "farfield_beside_m", "farfield_every_steps",
                               "farfield_wake_force_weight", "farfield_wake_speed_m_s", "farfield_wake_by", "moving_window",
                               "moving_window_ahead_m", "moving_window_behind_m", "symmetry_y", "neighbor_skin_d", "early_stop_rel_ci", "early_stop_trend_check"});
     r.boolean(s, "speedups", "farfield", c.speedups.farfield);
     r.num(s, "speedups", "farfield_ahead_m", c.speedups.farfield_ahead_m, non_negative, ">= 0");
     r.num(s, "speedups", "farfield_behind_m", c.speedups.farfield_behind_m, non_negative, ">= 0");
+    r.opt_num(s, "speedups", "farfield_beside_m", c.speedups.farfield_beside_m);
+    if (c.speedups.farfield_beside_m && !(*c.speedups.farfield_beside_m >= 0))
+      r.fail(s["farfield_beside_m"], "speedups.farfield_beside_m",
+             fmt::format("must be >= 0 (m beyond the hull's half beam), got {}", *c.speedups.farfield_beside_m));
     double every = c.speedups.farfield_every_steps;
     r.num(s, "speedups", "farfield_every_steps", every,
           [](double n) { return n >= 1 && n <= 1e6 && n == std::floor(n); }, "an integer in [1, 1000000]");
@@ -651,6 +655,7 @@ std::string dump_case_yaml(const Case& c) {
   line("  ", "farfield", c.speedups.farfield ? "true" : "false");
   line("  ", "farfield_ahead_m", num(c.speedups.farfield_ahead_m));
   line("  ", "farfield_behind_m", num(c.speedups.farfield_behind_m));
+  if (c.speedups.farfield_beside_m) line("  ", "farfield_beside_m", num(*c.speedups.farfield_beside_m));
   line("  ", "farfield_every_steps", fmt::format("{}", c.speedups.farfield_every_steps));
   line("  ", "farfield_wake_force_weight", num(c.speedups.farfield_wake_force_weight));
   line("  ", "farfield_wake_speed_m_s", num(c.speedups.farfield_wake_speed_m_s));

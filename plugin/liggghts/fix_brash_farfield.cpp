@@ -42,6 +42,9 @@ FixBrashFarfield::FixBrashFarfield(LAMMPS* lmp, int narg, char** arg) : Fix(lmp,
     } else if (key == "behind") {
       behind_ = keyword_number(error, "brash/farfield", key, val), have_behind_ = true;
       if (behind_ < 0) error->all(FLERR, "fix brash/farfield: 'behind' must be >= 0");
+    } else if (key == "beside") {
+      beside_half_width_m_ = keyword_number(error, "brash/farfield", key, val);
+      if (!(beside_half_width_m_ > 0)) error->all(FLERR, "fix brash/farfield: 'beside' must be > 0");
     } else if (HullTrack::keyword(key)) {
       track_.take(key, keyword_number(error, "brash/farfield", key, val));
     } else if (key == "wake_speed") {
@@ -59,7 +62,7 @@ FixBrashFarfield::FixBrashFarfield(LAMMPS* lmp, int narg, char** arg) : Fix(lmp,
       idle_name_ = val;
     } else {
       const std::string msg = "fix brash/farfield: unknown keyword '" + key +
-                              "' (expected every, ahead, behind, hull_x0, speed, bow_offset, stern_offset, "
+                              "' (expected every, ahead, behind, beside, hull_x0, speed, bow_offset, stern_offset, "
                               "wake_speed, wake_force, wake_neighbour_speed, active, idle)";
       error->all(FLERR, msg.c_str());
     }
@@ -218,8 +221,9 @@ int FixBrashFarfield::mark_touched_by_fast_pieces() {
 
 void FixBrashFarfield::update_membership(bool setup) {
   const double t = static_cast<double>(update->ntimestep) * update->dt;
-  const brash::core::FarFieldWindow window =
+  brash::core::FarFieldWindow window =
       brash::core::far_field_window(track_.stern_x_m(t), track_.bow_x_m(t), behind_, ahead_);
+  window.half_width_m = beside_half_width_m_;
   const brash::core::WakeRule rule = wake_rule();
   double** x = atom->x;
   double** v = atom->v;

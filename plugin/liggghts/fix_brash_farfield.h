@@ -1,6 +1,6 @@
 /* fix brash/farfield: idle far-field ice (docs/performance.md, switch speedups.farfield).
 
-   fix ID group-ID brash/farfield every N ahead A behind B hull_x0 X0 speed U bow_offset LB stern_offset LS
+   fix ID group-ID brash/farfield every N ahead A behind B [beside H] hull_x0 X0 speed U bow_offset LB stern_offset LS
                                   [wake_force F [wake_speed V] | wake_neighbour_speed V] [active GROUP] [idle GROUP]
 
    Bow at x = X0 + LB + U t, stern at x = X0 + LS + U t (t = step * dt, the hull moving at U along +x from
@@ -10,7 +10,8 @@
    (e.g. `group active type 1`, `group idle subtract all all`). The scene integrates, and applies gravity and
    fluid forces to, group `active` only, and excludes idle-idle pairs with `neigh_modify exclude group idle
    idle`; active-idle contacts are still computed (an idle piece is an immovable neighbour until the ship
-   comes within A of it).
+   comes within A of it). beside H (m): atoms with |y| > H (beside the hull, between it and the channel walls; the
+   hull's centre line at y = 0) are outside the window too, and go idle as behind the stern; default: none.
 
    wake_force F (N), wake_speed V (m/s) (default 0 = off: the window alone). The window alone is not enough
    when the ship's push travels further than A through the ice (a packed bed pushed ahead of the bow: an idle
@@ -40,6 +41,7 @@
 */
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -76,6 +78,7 @@ class FixBrashFarfield : public LAMMPS_NS::Fix {
 
   int every_ = 100;
   double ahead_ = 1.0, behind_ = 1.0;
+  double beside_half_width_m_ = std::numeric_limits<double>::infinity();  // |y| beyond this: beside the hull
   HullTrack track_;
   int active_bit_ = 0, idle_bit_ = 0;
   std::string active_name_ = "active", idle_name_ = "idle";

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <map>
+#include <regex>
 #include <sstream>
 
 #include "liggghts_runner.h"
@@ -314,4 +315,38 @@ TEST(LiggghtsFarfield, WakeSpeedMustNotBeNegative) {
   in.replace(pos, 16, "wake_speed -1");
   EXPECT_NE(run_liggghts(dir, in), 0);
   EXPECT_NE(read_text(dir / "screen_in.lmp.txt").find("'wake_speed' must be >= 0"), std::string::npos);
+}
+
+// beside H: a resting piece with |y| > H goes idle at the first update (no faster than the wake speed), one inside
+// |y| <= H stays active; both lie within the window along x. The push on group `active` then moves only the one
+// inside, and the thermo's idle count is 1.
+TEST(LiggghtsFarfield, BesideTheHullIdlesThePieceBeyondTheHalfWidth) {
+  const auto dir = fresh_dir("farfield_beside");
+  std::string s = brash::test::box_along_x(1.1, 1);
+  s += "create_atoms 1 single 0.1 0 0 units box\ncreate_atoms 1 single 0.1 0.3 0 units box\n";
+  s += fmt::format(R"(set group all diameter {d} density 900
+group active type 1
+group idle subtract all all
+neighbor 0.002 bin
+neigh_modify delay 0 exclude group idle idle
+{contacts}
+timestep {dt}
+fix ff all brash/farfield every 10 ahead 0.5 behind 0.5 beside 0.2 hull_x0 0 speed 0 bow_offset 0.1 stern_offset 0 wake_neighbour_speed 0.005
+fix integr active nve/sphere
+fix push active addforce 1e-3 0 0
+dump d all custom 100 dump.*.txt id x y z vx vy vz
+dump_modify d sort id
+thermo_style custom step atoms f_ff[1]
+thermo 100
+run 100
+)",
+                   fmt::arg("contacts", brash::test::ice_contact_model("0.5")), fmt::arg("d", kD), fmt::arg("dt", kDt));
+  ASSERT_EQ(run_liggghts(dir, s), 0) << read_text(dir / "screen_in.lmp.txt");
+  const auto start = read_dump(dir / "dump.0.txt"), end = read_dump(dir / "dump.100.txt");
+  ASSERT_EQ(end.size(), 2u);
+  EXPECT_GT(end.at(1).x, start.at(1).x + 1e-4);  // inside: pushed
+  EXPECT_EQ(end.at(2).x, start.at(2).x);         // beside: idle
+  EXPECT_EQ(end.at(2).vx, 0.0);
+  const std::string screen = read_text(dir / "screen_in.lmp.txt");
+  EXPECT_TRUE(std::regex_search(screen, std::regex(R"(\n\s*100\s+2\s+1\s*\n)"))) << screen;  // step, atoms, idle
 }

@@ -427,5 +427,12 @@ TEST(LiggghtsRunner, FarfieldSceneWakesPushedIceByTheCasesRuleUnlessTheWindowAlo
       "speedups:\n  farfield: true\n  farfield_ahead_m: 0.3\n  farfield_wake_by: neighbour_speed\n", "neighbour");
   EXPECT_NE(neighbour.find(" wake_neighbour_speed 0.005 active active"), std::string::npos) << neighbour;
   EXPECT_EQ(neighbour.find("wake_force"), std::string::npos);
+  EXPECT_EQ(neighbour.find(" beside "), std::string::npos);  // the whole width unless farfield_beside_m
+  // farfield_beside_m: the half width beyond which ice idles is the hull's half beam (the JBC model's 0.5625 m) + it
+  const std::string beside = prepare("speedups:\n  farfield: true\n  farfield_ahead_m: 0.3\n  farfield_beside_m: 0.1\n",
+                                     "beside");
+  const auto at = beside.find(" beside ");
+  ASSERT_NE(at, std::string::npos) << beside;
+  EXPECT_NEAR(std::stod(beside.substr(at + 8)), 0.5625 + 0.1, 2e-3);
   fs::remove_all(dir);
 }

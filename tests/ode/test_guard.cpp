@@ -178,7 +178,7 @@ TEST_F(OdeGuard, HullFlowRunsWithDragAndIsRefusedWithAddedMass) {
 }
 
 // Keys only LIGGGHTS carries out are refused by name before any output, not run as the whole channel with
-// every piece awake: the half channel, the idle far field and the moving window.
+// every piece awake: the half channel and the moving window.
 TEST_F(OdeGuard, KeysOnlyLiggghtsCarriesOutAreRefusedByName) {
   const struct {
     const char* name;
@@ -186,7 +186,6 @@ TEST_F(OdeGuard, KeysOnlyLiggghtsCarriesOutAreRefusedByName) {
     const char* to;
     const char* key;
   } cases[] = {{"symmetry", "\nrun:\n", "\nspeedups:\n  symmetry_y: true\nrun:\n", "speedups.symmetry_y: true"},
-               {"farfield", "\nrun:\n", "\nspeedups:\n  farfield: true\nrun:\n", "speedups.farfield: true"},
                // (the moving window needs the settled bed, which brash-ode runs: only the window is named)
                {"window", "\nice:\n", "\nspeedups:\n  moving_window: true\nice:\n  settle: true\n",
                 "speedups.moving_window: true"}};
@@ -202,15 +201,19 @@ TEST_F(OdeGuard, KeysOnlyLiggghtsCarriesOutAreRefusedByName) {
         << r.err;
     EXPECT_FALSE(fs::exists(r.run / "meta.json")) << c.name;  // refused before any output
   }
-  // the paper case's switches together: one message names both refused keys and the one copy to run; the settled
-  // bed is kept
+  // switches together: one message names both refused keys and the one copy to run; the settled bed and the far
+  // field are kept
   const auto r = run(make_case("refused_both", "\nice:\n",
-                               "\nspeedups:\n  farfield: true\n  moving_window: true\nice:\n  settle: true\n", ""),
+                               "\nspeedups:\n  symmetry_y: true\n  farfield: true\n  moving_window: true\nice:\n"
+                               "  settle: true\n",
+                               ""),
                      "0.1");
   EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_NE(r.err.find("--set speedups.farfield=false --set speedups.moving_window=false --out DIR"), std::string::npos)
+  EXPECT_NE(r.err.find("--set speedups.symmetry_y=false --set speedups.moving_window=false --out DIR"),
+            std::string::npos)
       << r.err;
   EXPECT_EQ(r.err.find("ice.settle"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("speedups.farfield"), std::string::npos) << r.err;
 }
 
 // The settled bed (ice.settle) runs on ODE with a contact surface layer as deep as its largest overlap (deeper
@@ -246,6 +249,37 @@ TEST_F(OdeGuard, SettledBedRunsWithASurfaceLayerAsDeepAsItsLargestOverlap) {
   const auto packing = run(make_case("packing", "", "", ""), "0.02");
   ASSERT_EQ(packing.exit_code, 0) << packing.err;
   EXPECT_EQ(layer_in(packing.meta), 0.0);
+}
+
+// The case's far field (speedups.farfield: true) is brash-ode's --cull with the case's window (ahead, behind,
+// beside), membership period (farfield_every_steps DEM steps in ODE steps) and wake; a --cull-* option given on the
+// command line wins over the case's key.
+TEST_F(OdeGuard, CaseFarFieldIsTheCullWithTheCasesWindowUnlessTheCommandLineSaysOtherwise) {
+  const fs::path dir = make_case("farfield", "\nrun:\n",
+                                 "\nspeedups:\n  farfield: true\n  farfield_ahead_m: 0.3\n  farfield_behind_m: 0.7\n"
+                                 "  farfield_beside_m: 0.1\n  farfield_every_steps: 100\n"
+                                 "  farfield_wake_by: neighbour_speed\nrun:\n",
+                                 "");
+  const auto skips = [&](const std::string& name, const std::string& extra) {
+    const fs::path out = dir.parent_path() / name, err = dir.parent_path() / (name + ".txt");
+    const std::string cmd = std::string("'") + BRASH_ODE_EXE + "' '" + dir.string() + "' --out '" + out.string() +
+                            "' --duration 0.02 --dt 5e-4 --no-progress --no-post " + extra + " > /dev/null 2> '" +
+                            err.string() + "'";
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << slurp(err);
+    const auto meta = nlohmann::json::parse(slurp(out / "meta.json"), nullptr, false);
+    return meta.is_object() ? meta["skips"] : nlohmann::json();
+  };
+  const auto k = skips("case", "");
+  EXPECT_EQ(k.value("cull", false), true) << k;
+  EXPECT_DOUBLE_EQ(k.value("cull_ahead_m", -1.0), 0.3);
+  EXPECT_DOUBLE_EQ(k.value("cull_behind_m", -1.0), 0.7);
+  EXPECT_DOUBLE_EQ(k.value("cull_side_m", -1.0), 0.1);
+  EXPECT_EQ(k.value("cull_every_steps", -1), 20);  // 100 steps of 1e-4 s = 0.01 s = 20 steps of 5e-4 s
+  EXPECT_EQ(k.value("cull_wake_by", std::string()), "neighbour_speed");
+  const auto given = skips("given", "--cull-ahead 0.5 --cull-side 0.2");
+  EXPECT_DOUBLE_EQ(given.value("cull_ahead_m", -1.0), 0.5);
+  EXPECT_DOUBLE_EQ(given.value("cull_behind_m", -1.0), 0.7);
+  EXPECT_DOUBLE_EQ(given.value("cull_side_m", -1.0), 0.2);
 }
 
 // bench-ode --scene-from starts from another run's particle dump (its pieces, with their velocities) with the hull

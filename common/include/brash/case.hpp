@@ -147,6 +147,9 @@ struct SpeedupSpec {
   bool farfield = false;                // idle far-field ice: not integrated, no contacts among idle pieces
   double farfield_ahead_m = 1.0;        // idle: more than this ahead of the bow
   double farfield_behind_m = 1.0;       // idle: more than this behind the stern
+  // idle also beside the hull: more than this beyond the hull's half beam (the ice between the hull and the channel
+  // walls; idle there once slower than the wake speed, as behind the stern); none: the whole width is in the window
+  std::optional<double> farfield_beside_m;
   int farfield_every_steps = 100;       // membership update period [steps]
   double farfield_wake_force_weight = 1e-3;  // an idle piece wakes when the horizontal force on it exceeds this
                                         // fraction of the mean piece's weight (0 = the window alone: idle ice is

@@ -166,6 +166,7 @@ void LiggghtsEngine::load(const Case& c, const fs::path& case_file, const std::v
   options_.ranks = ranks_;
   options_.hull_x_min_m = full.min_m.x();
   options_.hull_x_max_m = full.max_m.x();
+  options_.hull_half_beam_m = half_beam;
   options_.restart_every_steps = std::max(
       1L, std::lround((restart_every_s_ > 0 ? restart_every_s_ : c.run.duration_s / 10) / c.run.timestep_s));
 }

@@ -185,10 +185,12 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
                wake_force_N > 0) {
       wake = fmt::format(" wake_force {:.9g} wake_speed {:.9g}", wake_force_N, sp.farfield_wake_speed_m_s);
     }
+    const std::string beside =
+        sp.farfield_beside_m ? fmt::format(" beside {:.9g}", opt.hull_half_beam_m + *sp.farfield_beside_m) : "";
     s += fmt::format(
-        "fix farfield all brash/farfield every {} ahead {:.9g} behind {:.9g} hull_x0 {:.9g} speed {:.9g} "
+        "fix farfield all brash/farfield every {} ahead {:.9g} behind {:.9g}{} hull_x0 {:.9g} speed {:.9g} "
         "bow_offset {:.9g} stern_offset {:.9g}{} active active idle idle\n",
-        sp.farfield_every_steps, sp.farfield_ahead_m, sp.farfield_behind_m, hull_x0, c.ship.speed_m_s,
+        sp.farfield_every_steps, sp.farfield_ahead_m, sp.farfield_behind_m, beside, hull_x0, c.ship.speed_m_s,
         opt.hull_x_max_m, opt.hull_x_min_m, wake);
   }
   s += fmt::format("fix integr {} nve/sphere\n", moving);

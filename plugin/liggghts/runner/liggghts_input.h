@@ -25,6 +25,7 @@ struct SceneOptions {
   std::string flow_hull_file = "hull.stl";
   double hull_x_min_m = 0;      // x extent of the hull in the STL frame (stern, bow) for speedups.farfield
   double hull_x_max_m = 0;
+  double hull_half_beam_m = 0;  // largest |y| of the hull, for speedups.farfield_beside_m
 };
 
 struct Box {

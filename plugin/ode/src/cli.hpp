@@ -44,13 +44,19 @@ inline void add_run_options(CLI::App& app, RunOptions& o, std::string& implicit_
       ->capture_default_str();
   app.add_flag("--cull", o.skips.cull,
                "skip: freeze spheres outside a window around the hull (static obstacles) until pushed "
-               "(the far-field rule of fix brash/farfield)");
-  app.add_option("--cull-ahead", o.skips.cull_ahead_m, "cull/auto-disable: active distance ahead of the bow [m]")
-      ->capture_default_str();
-  app.add_option("--cull-behind", o.skips.cull_behind_m, "cull/auto-disable: active distance behind the stern [m]")
-      ->capture_default_str();
-  app.add_option("--cull-side", o.skips.cull_side_m,
-                 "cull/auto-disable: active distance beside the hull's half beam [m] (default: the whole width)");
+               "(the far-field rule of fix brash/farfield; on with the case's speedups.farfield: true)");
+  app.add_option("--cull-ahead", o.cull_ahead_m,
+                 "cull/auto-disable: active distance ahead of the bow [m] (default: the case's "
+                 "speedups.farfield_ahead_m with farfield: true, else 1)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--cull-behind", o.cull_behind_m,
+                 "cull/auto-disable: active distance behind the stern [m] (default: the case's "
+                 "speedups.farfield_behind_m with farfield: true, else 1)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--cull-side", o.cull_side_m,
+                 "cull/auto-disable: active distance beside the hull's half beam [m] (default: the case's "
+                 "speedups.farfield_beside_m, else the whole width)")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--cull-wake-weight", o.cull_wake_force_weight,
                  "cull: a frozen sphere wakes when the horizontal force on it exceeds this fraction of the weight of "
                  "a piece of the mean diameter; 0 = the window alone (default: the case's "

@@ -59,7 +59,7 @@ OdeEngine::~OdeEngine() = default;
 
 nlohmann::json OdeEngine::meta() const {
   const auto& st = options_.stepper;
-  const auto& k = options_.skips;
+  const Skips k = scene_ ? cull_skips(options_, scene_->c) : options_.skips;
   return {
       {"engine_version", fmt::format("brash-ode 0.1 + ODE {} (Debian libode, double, dWorldQuickStep)", "0.16.2")},
       {"implicit_realisation",
@@ -75,7 +75,9 @@ nlohmann::json OdeEngine::meta() const {
                  {"disable_linear_m_s", k.disable_linear_m_s}, {"disable_angular_rad_s", k.disable_angular_rad_s},
                  {"disable_steps", k.disable_steps}, {"cull", k.cull}, {"cull_ahead_m", k.cull_ahead_m},
                  {"cull_behind_m", k.cull_behind_m},
-                 {"cull_wake_force_N", scene_ ? cull_skips(options_, scene_->c).wake_force_N : 0.0}}},
+                 {"cull_side_m", k.cull_side_m}, {"cull_every_steps", k.cull_every},
+                 {"cull_wake_force_N", k.wake_force_N}, {"cull_wake_speed_m_s", k.wake_speed_m_s},
+                 {"cull_wake_by", std::string(to_string(k.wake_by))}}},
       {"end_walls", options_.end_walls},
       {"settle_s", options_.settle_s},
       {"ode_options", options_json(options_)},
@@ -241,6 +243,17 @@ void Stepping::log_scene() {
                   to_string(c_.fluid.model), to_string(c_.fluid.treatment),
                   o_.implicit_mode == ImplicitMode::EffectiveMass ? "effective_mass" : "scale_forces",
                   to_string(c_.fluid.ca_table), c_.fluid.drag_coefficient, to_string(c_.fluid.drag_law)));
+  if (const Skips k = cull_skips(o_, c_); k.cull) {
+    const core::WakeRule wake = k.wake_rule();
+    log(fmt::format("far field{}: idle beyond {} m ahead of the bow, {} m behind the stern{}; membership every {} "
+                    "steps; {}",
+                    c_.speedups.farfield ? " (speedups.farfield)" : " (--cull)", k.cull_ahead_m, k.cull_behind_m,
+                    k.cull_side_m < Skips{}.cull_side_m ? fmt::format(", {} m beyond the hull's half beam", k.cull_side_m) : "",
+                    k.cull_every,
+                    !wake.enabled()                       ? std::string("the window alone (no wake rule)")
+                    : wake.by == WakeBy::NeighbourSpeed ? fmt::format("woken by a neighbour faster than {} m/s", wake.speed_m_s)
+                                                          : fmt::format("woken by a horizontal force above {:.4g} N", wake.force_N)));
+  }
   if (!o_.scene_from.empty())
     log(fmt::format("scene from {} at t = {} s of its run: {} pieces, hull at x = {:.4g} m (pieces numbered in the "
                     "file's order)",
@@ -514,7 +527,7 @@ run::Attempt OdeEngine::advance(const fs::path& run_dir, const std::string& rest
       if (std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf", &r.t_s, &r.fx_N, &r.fy_N, &r.fz_N) == 4) rows_.push_back(r);
   }
   // docs/performance.md "The far field's error": measured on LIGGGHTS with the same rule
-  if (options_.skips.cull && !cull_skips(options_, scene_->c).wake_rule().enabled())
+  if (const Skips k = cull_skips(options_, scene_->c); k.cull && !k.wake_rule().enabled())
     fmt::print(stderr, "[brash-ode] warning: --cull with no wake rule (the window alone): the push of the bow "
                        "cannot reach past the window, which raised the mean resistance by +8 to +20 % in paired "
                        "LIGGGHTS ensembles\n");

@@ -1,6 +1,7 @@
 // brash-ode's run options in meta.json (ode_options), for --resume; the --cull wake in SI units.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -45,9 +46,9 @@ nlohmann::json options_json(const RunOptions& o) {
           {"disable_steps", k.disable_steps},
           {"auto_disable_far_only", k.auto_disable_far_only},
           {"cull", k.cull},
-          {"cull_ahead_m", k.cull_ahead_m},
-          {"cull_behind_m", k.cull_behind_m},
-          {"cull_side_m", k.cull_side_m},
+          {"cull_ahead_m", o.cull_ahead_m},
+          {"cull_behind_m", o.cull_behind_m},
+          {"cull_side_m", o.cull_side_m},
           {"cull_every", k.cull_every},
           {"cull_geoms", k.cull_geoms},
           {"cull_wake_force_weight", o.cull_wake_force_weight},
@@ -110,6 +111,18 @@ SceneFromDump read_scene_dump(const fs::path& file) {
 // The skips with --cull's wake rule in SI units: the case's unless given (brash/core/far_field.hpp).
 Skips cull_skips(const RunOptions& o, const Case& c) {
   Skips k = o.skips;
+  const SpeedupSpec& sp = c.speedups;
+  const Skips defaults;
+  const auto pick = [&](double given, double from_case, double otherwise) {
+    return given >= 0 ? given : sp.farfield ? from_case : otherwise;
+  };
+  k.cull = k.cull || sp.farfield;
+  k.cull_ahead_m = pick(o.cull_ahead_m, sp.farfield_ahead_m, defaults.cull_ahead_m);
+  k.cull_behind_m = pick(o.cull_behind_m, sp.farfield_behind_m, defaults.cull_behind_m);
+  k.cull_side_m = pick(o.cull_side_m, sp.farfield_beside_m.value_or(defaults.cull_side_m), defaults.cull_side_m);
+  // the case's membership period in model time (farfield_every_steps DEM steps) in ODE steps
+  if (sp.farfield)
+    k.cull_every = std::max(1, static_cast<int>(std::lround(sp.farfield_every_steps * c.run.timestep_s / o.stepper.dt_s)));
   const double weight =
       o.cull_wake_force_weight >= 0 ? o.cull_wake_force_weight : c.speedups.farfield_wake_force_weight;
   k.wake_force_N = core::wake_force_N(weight, c.ice.diameter_mean_m, c.ice.density_kg_m3, c.water.gravity_m_s2);
@@ -154,9 +167,9 @@ RunOptions options_from_meta(const fs::path& run_dir, const RunOptions& cli) {
     o.skips.disable_steps = j.at("disable_steps");
     o.skips.auto_disable_far_only = j.at("auto_disable_far_only");
     o.skips.cull = j.at("cull");
-    o.skips.cull_ahead_m = j.at("cull_ahead_m");
-    o.skips.cull_behind_m = j.at("cull_behind_m");
-    o.skips.cull_side_m = j.at("cull_side_m");
+    o.cull_ahead_m = j.at("cull_ahead_m");  // (runs before the case's far field on ODE: the values they ran with)
+    o.cull_behind_m = j.at("cull_behind_m");
+    o.cull_side_m = j.at("cull_side_m");
     o.skips.cull_every = j.at("cull_every");
     o.skips.cull_geoms = j.value("cull_geoms", true);  // runs before the switch existed: same contacts either way
     o.cull_wake_force_weight = j.value("cull_wake_force_weight", 0.0);  // runs before the wake: the window alone

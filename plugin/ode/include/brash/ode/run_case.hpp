@@ -31,6 +31,9 @@ struct RunOptions {
   // farfield_wake_speed_m_s (as brash-liggghts-run gives fix brash/farfield); the run sets skips' wake from them.
   double cull_wake_force_weight = -1;
   double cull_wake_speed_m_s = -1;
+  // --cull-ahead/--cull-behind/--cull-side, negative = the case's speedups.farfield_ahead_m / farfield_behind_m /
+  // farfield_beside_m when the case has speedups.farfield: true, else Skips' defaults (the window of cull_skips)
+  double cull_ahead_m = -1, cull_behind_m = -1, cull_side_m = -1;
   ImplicitMode implicit_mode = ImplicitMode::EffectiveMass;
   SphereOrder sphere_order = SphereOrder::Spatial;
   bool end_walls = false;              // --end-walls: the case with channel.ends: walls
@@ -70,6 +73,8 @@ class OdeEngine final : public run::Engine {
   nlohmann::json meta() const override;
   // The settled bed with a contact surface layer as deep as its largest overlap (load()).
   bool starts_from_settled_bed() const override { return true; }
+  // speedups.farfield: the far-field rule as --cull, with the case's window, period and wake (cull_skips).
+  bool idles_far_field() const override { return true; }
   void load(const Case& c, const std::filesystem::path& case_file, const std::vector<Sphere>& spheres) override;
   void write_scene(const std::filesystem::path&, bool) override {}  // the scene lives in this process
   std::vector<std::string> restarts(const std::filesystem::path& run_dir) const override;
