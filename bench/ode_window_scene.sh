@@ -5,10 +5,10 @@
 # where it was then (bench-ode --scene-from). Each setting runs STEPS steps of dt 1e-3 s on one core, one after the
 # other in one sitting:
 #   all        every piece integrated
-#   farfield   --cull with the case's far field: idle beyond 0.3 m ahead of the bow and 1.0 m behind the stern,
-#              woken by a neighbour faster than 5 mm/s (speedups.farfield_*)
+#   farfield   --cull with the case's far field window: idle beyond 0.3 m ahead of the bow and 1.0 m behind the
+#              stern, woken by the force rule (1e-3 of a piece's weight: brash-ode refuses the neighbour-speed wake)
 #   beside     farfield, and ice more than SIDE_M beyond the hull's half beam idles too once slower than 5 mm/s
-#              (--cull-side; the ice between the hull and the channel walls)
+#              (--cull-side, speedups.farfield_beside_m; the ice between the hull and the channel walls)
 # A scene from a soft-contact run starts with a contact surface layer as deep as its largest overlap (as the settled
 # bed does). Prints seconds per step, pieces awake and contacts at the end, and the ratios to `all`.
 #   bash bench/ode_window_scene.sh [RUN_DIR (runs/paper-liggghts-both-window)] [STEPS (20)]   (~10 min)
@@ -30,10 +30,10 @@ if [ ! -f "$run/particles/index.csv" ]; then
 fi
 work="$(mktemp -d /tmp/brash-odewindow-XXXX)"
 trap 'rm -rf "$work"' EXIT
-# the case the run ran, every piece of it integrated unless a setting says otherwise (brash-ode runs neither the
-# moving window nor the case's far-field key: --cull is its far field)
+# the case the run ran, every piece of it integrated unless a setting culls (brash-ode runs no moving window; the
+# scene is the dump, not the case's bed; its far field is the force rule's)
 "$bin/brash-case" derive "$run/case.yaml" --out "$work/case" --set ice.settle=false --set speedups.farfield=false \
-  --set speedups.moving_window=false > /dev/null
+  --set speedups.moving_window=false --set speedups.farfield_wake_by=force > /dev/null
 # the dump at model time T: its file name from the run's particles/index.csv (step,t_s,file,...)
 dump_at() { awk -F, -v t="$1" 'NR > 1 && $2 + 0 == t + 0 { print $3 }' "$run/particles/index.csv"; }
 

@@ -253,12 +253,13 @@ TEST_F(OdeGuard, SettledBedRunsWithASurfaceLayerAsDeepAsItsLargestOverlap) {
 
 // The case's far field (speedups.farfield: true) is brash-ode's --cull with the case's window (ahead, behind,
 // beside), membership period (farfield_every_steps DEM steps in ODE steps) and wake; a --cull-* option given on the
-// command line wins over the case's key.
+// command line wins over the case's key. The neighbour-speed wake is refused (biased on rigid contacts), naming the
+// key and the copy to run.
 TEST_F(OdeGuard, CaseFarFieldIsTheCullWithTheCasesWindowUnlessTheCommandLineSaysOtherwise) {
   const fs::path dir = make_case("farfield", "\nrun:\n",
                                  "\nspeedups:\n  farfield: true\n  farfield_ahead_m: 0.3\n  farfield_behind_m: 0.7\n"
                                  "  farfield_beside_m: 0.1\n  farfield_every_steps: 100\n"
-                                 "  farfield_wake_by: neighbour_speed\nrun:\n",
+                                 "  farfield_wake_by: force\nrun:\n",
                                  "");
   const auto skips = [&](const std::string& name, const std::string& extra) {
     const fs::path out = dir.parent_path() / name, err = dir.parent_path() / (name + ".txt");
@@ -275,11 +276,22 @@ TEST_F(OdeGuard, CaseFarFieldIsTheCullWithTheCasesWindowUnlessTheCommandLineSays
   EXPECT_DOUBLE_EQ(k.value("cull_behind_m", -1.0), 0.7);
   EXPECT_DOUBLE_EQ(k.value("cull_side_m", -1.0), 0.1);
   EXPECT_EQ(k.value("cull_every_steps", -1), 20);  // 100 steps of 1e-4 s = 0.01 s = 20 steps of 5e-4 s
-  EXPECT_EQ(k.value("cull_wake_by", std::string()), "neighbour_speed");
+  EXPECT_EQ(k.value("cull_wake_by", std::string()), "force");
   const auto given = skips("given", "--cull-ahead 0.5 --cull-side 0.2");
   EXPECT_DOUBLE_EQ(given.value("cull_ahead_m", -1.0), 0.5);
   EXPECT_DOUBLE_EQ(given.value("cull_behind_m", -1.0), 0.7);
   EXPECT_DOUBLE_EQ(given.value("cull_side_m", -1.0), 0.2);
+  std::string yaml = slurp(dir / "case.yaml");
+  yaml.replace(yaml.find("farfield_wake_by: force"), 23, "farfield_wake_by: neighbour_speed");
+  std::ofstream(dir / "case.yaml") << yaml;
+  const fs::path out = dir.parent_path() / "neighbour", err = dir.parent_path() / "neighbour.txt";
+  const std::string cmd = std::string("'") + BRASH_ODE_EXE + "' '" + dir.string() + "' --out '" + out.string() +
+                          "' --duration 0.02 --no-progress --no-post > /dev/null 2> '" + err.string() + "'";
+  const int st = std::system(cmd.c_str());
+  EXPECT_EQ(WIFEXITED(st) ? WEXITSTATUS(st) : -1, 2);
+  EXPECT_NE(slurp(err).find("speedups.farfield_wake_by: neighbour_speed"), std::string::npos) << slurp(err);
+  EXPECT_NE(slurp(err).find("--set speedups.farfield_wake_by=force"), std::string::npos) << slurp(err);
+  EXPECT_FALSE(fs::exists(out / "meta.json"));
 }
 
 // bench-ode --scene-from starts from another run's particle dump (its pieces, with their velocities) with the hull
