@@ -214,6 +214,17 @@ TEST_F(OdeGuard, KeysOnlyLiggghtsCarriesOutAreRefusedByName) {
       << r.err;
   EXPECT_EQ(r.err.find("ice.settle"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("speedups.farfield"), std::string::npos) << r.err;
+  // the paper case's form (moving window, far field woken by neighbour speed): one message, one copy to run
+  const auto paper = run(make_case("refused_paper", "\nice:\n",
+                                   "\nspeedups:\n  farfield: true\n  farfield_ahead_m: 0.3\n"
+                                   "  farfield_wake_by: neighbour_speed\n  moving_window: true\nice:\n  settle: true\n",
+                                   ""),
+                         "0.1");
+  EXPECT_EQ(paper.exit_code, 2) << paper.err;
+  EXPECT_NE(paper.err.find("--set speedups.moving_window=false --set speedups.farfield_wake_by=force --out DIR"),
+            std::string::npos)
+      << paper.err;
+  EXPECT_FALSE(fs::exists(paper.run / "meta.json"));
 }
 
 // The settled bed (ice.settle) runs on ODE with a contact surface layer as deep as its largest overlap (deeper

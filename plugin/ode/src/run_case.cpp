@@ -84,18 +84,21 @@ nlohmann::json OdeEngine::meta() const {
       {"resumes", nlohmann::json::array()}};
 }
 
+std::string OdeEngine::neighbour_speed_wake_refusal() const {
+  return "on brash-ode's rigid contacts a pushed piece stops at the idle ice instead of moving into it, so the push "
+         "never wakes it (+8.45 % ± 0.81 % mean resistance on cases/jbc_narrow, docs/ode.md \"The far field on "
+         "ODE\"); brash-ode idles the far field with the force rule";
+}
+
 void OdeEngine::load(const Case& case_in, const fs::path& case_file, const std::vector<Sphere>& packing) {
   const auto& st = options_.stepper;
   if (!(st.dt_s > 0) || !std::isfinite(st.dt_s)) throw InputError(fmt::format("--dt {}: must be > 0", st.dt_s));
-  // The neighbour-speed wake needs the pushed ice to move into the idle ice; a rigid contact stops it there instead,
-  // so the push never wakes the idle ice and it stays a wall (docs/ode.md, "The far field on ODE").
+  // The neighbour-speed wake needs the pushed ice to move into the idle ice (the driver refuses it with the case's
+  // far field; here --cull with the case's wake rule)
   if (const Skips k = cull_skips(options_, case_in); k.cull && k.wake_by == WakeBy::NeighbourSpeed)
-    throw InputError(fmt::format(
-        "{}: speedups.farfield_wake_by: neighbour_speed: on brash-ode's rigid contacts a pushed piece stops at the "
-        "idle ice instead of moving into it, so the push never wakes it (+8.45 % ± 0.81 % mean resistance on "
-        "cases/jbc_narrow, docs/ode.md \"The far field on ODE\"); run a copy with the force rule: `brash-case derive "
-        "{} --set speedups.farfield_wake_by=force --out DIR`",
-        case_file.string(), case_file.parent_path().string()));
+    throw InputError(fmt::format("{}: speedups.farfield_wake_by: neighbour_speed: {}. Run a copy made with "
+                                 "`brash-case derive {} --set speedups.farfield_wake_by=force --out DIR`",
+                                 case_file.string(), neighbour_speed_wake_refusal(), case_file.parent_path().string()));
   scene_ = std::make_unique<Scene>();
   Scene& s = *scene_;
   Case c = case_in;

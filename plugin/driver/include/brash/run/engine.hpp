@@ -62,6 +62,9 @@ class Engine {
   virtual bool runs_half_channel() const { return false; }
   virtual bool idles_far_field() const { return false; }
   virtual bool moves_window() const { return false; }  // speedups.moving_window
+  // Why the far field's neighbour-speed wake (speedups.farfield_wake_by: neighbour_speed) would be wrong on this
+  // engine; empty: it is not.
+  virtual std::string neighbour_speed_wake_refusal() const { return {}; }
 
   // Checks the case against what this engine can run and reads what the scene needs (hull, packing), before
   // any output is written. Throws InputError naming the case file.
