@@ -59,12 +59,14 @@ struct Result {
   fs::path run;
 };
 
-Result run(const fs::path& case_dir, const std::string& duration) {
-  const fs::path out = case_dir.parent_path() / "run";
-  const fs::path err = case_dir.parent_path() / "stderr.txt";
+// brash-ode on case_dir with the extra options, into the run folder `name` beside the case.
+Result run(const fs::path& case_dir, const std::string& duration, const std::string& extra = "",
+           const std::string& name = "run") {
+  const fs::path out = case_dir.parent_path() / name;
+  const fs::path err = case_dir.parent_path() / (name == "run" ? "stderr.txt" : name + "_stderr.txt");
   const std::string cmd = std::string("'") + BRASH_ODE_EXE + "' '" + case_dir.string() + "' --out '" +
-                          out.string() + "' --duration " + duration + " --no-progress --no-post > /dev/null 2> '" +
-                          err.string() + "'";
+                          out.string() + "' --duration " + duration + " --no-progress --no-post " + extra +
+                          " > /dev/null 2> '" + err.string() + "'";
   const int st = std::system(cmd.c_str());
   return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, slurp(err), slurp(out / "meta.json"), out};
 }
@@ -273,12 +275,9 @@ TEST_F(OdeGuard, CaseFarFieldIsTheCullWithTheCasesWindowUnlessTheCommandLineSays
                                  "  farfield_wake_by: force\nrun:\n",
                                  "");
   const auto skips = [&](const std::string& name, const std::string& extra) {
-    const fs::path out = dir.parent_path() / name, err = dir.parent_path() / (name + ".txt");
-    const std::string cmd = std::string("'") + BRASH_ODE_EXE + "' '" + dir.string() + "' --out '" + out.string() +
-                            "' --duration 0.02 --dt 5e-4 --no-progress --no-post " + extra + " > /dev/null 2> '" +
-                            err.string() + "'";
-    EXPECT_EQ(std::system(cmd.c_str()), 0) << slurp(err);
-    const auto meta = nlohmann::json::parse(slurp(out / "meta.json"), nullptr, false);
+    const Result r = run(dir, "0.02", "--dt 5e-4 " + extra, name);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    const auto meta = nlohmann::json::parse(r.meta, nullptr, false);
     return meta.is_object() ? meta["skips"] : nlohmann::json();
   };
   const auto k = skips("case", "");
@@ -295,14 +294,11 @@ TEST_F(OdeGuard, CaseFarFieldIsTheCullWithTheCasesWindowUnlessTheCommandLineSays
   std::string yaml = slurp(dir / "case.yaml");
   yaml.replace(yaml.find("farfield_wake_by: force"), 23, "farfield_wake_by: neighbour_speed");
   std::ofstream(dir / "case.yaml") << yaml;
-  const fs::path out = dir.parent_path() / "neighbour", err = dir.parent_path() / "neighbour.txt";
-  const std::string cmd = std::string("'") + BRASH_ODE_EXE + "' '" + dir.string() + "' --out '" + out.string() +
-                          "' --duration 0.02 --no-progress --no-post > /dev/null 2> '" + err.string() + "'";
-  const int st = std::system(cmd.c_str());
-  EXPECT_EQ(WIFEXITED(st) ? WEXITSTATUS(st) : -1, 2);
-  EXPECT_NE(slurp(err).find("speedups.farfield_wake_by: neighbour_speed"), std::string::npos) << slurp(err);
-  EXPECT_NE(slurp(err).find("--set speedups.farfield_wake_by=force"), std::string::npos) << slurp(err);
-  EXPECT_FALSE(fs::exists(out / "meta.json"));
+  const Result neighbour = run(dir, "0.02", "", "neighbour");
+  EXPECT_EQ(neighbour.exit_code, 2);
+  EXPECT_NE(neighbour.err.find("speedups.farfield_wake_by: neighbour_speed"), std::string::npos) << neighbour.err;
+  EXPECT_NE(neighbour.err.find("--set speedups.farfield_wake_by=force"), std::string::npos) << neighbour.err;
+  EXPECT_FALSE(fs::exists(neighbour.run / "meta.json"));
 }
 
 // bench-ode --scene-from starts from another run's particle dump (its pieces, with their velocities) with the hull
