@@ -44,7 +44,10 @@ constexpr EnumText<DragLaw> kDragLaw[] = {{DragLaw::Constant, "constant"},
 constexpr EnumText<HullFlow> kHullFlow[] = {
     {HullFlow::None, "none"}, {HullFlow::ThinShip, "thin_ship"}, {HullFlow::Panel, "panel"}};
 constexpr EnumText<ChannelEnds> kChannelEnds[] = {{ChannelEnds::Open, "open"}, {ChannelEnds::Walls, "walls"}};
-constexpr EnumText<WakeBy> kWakeBy[] = {{WakeBy::Force, "force"}, {WakeBy::NeighbourSpeed, "neighbour_speed"}};
+constexpr EnumText<WakeBy> kWakeBy[] = {
+    {WakeBy::Force, "force"},
+    {WakeBy::NeighbourSpeed, "neighbour_speed"},
+    {WakeBy::PushFront, "push_front"}};
 constexpr EnumText<CaTable> kCaTable[] = {{CaTable::Table1, "table1"},
                                           {CaTable::Text, "text"},
                                           {CaTable::Zero, "zero"},
@@ -442,7 +445,7 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
   {  // speedups (docs/performance.md)
     const auto s = r.section(root, "speedups",
                              {"farfield", "farfield_ahead_m", "farfield_behind_m", "farfield_beside_m", "farfield_every_steps",
-                              "farfield_wake_force_weight", "farfield_wake_speed_m_s", "farfield_wake_by", "moving_window",
+                              "farfield_wake_force_weight", "farfield_wake_speed_m_s", "farfield_wake_by", "farfield_front_speed_m_s", "moving_window",
                               "moving_window_ahead_m", "moving_window_behind_m", "symmetry_y", "neighbor_skin_d", "early_stop_rel_ci", "early_stop_trend_check"});
     r.boolean(s, "speedups", "farfield", c.speedups.farfield);
     r.num(s, "speedups", "farfield_ahead_m", c.speedups.farfield_ahead_m, non_negative, ">= 0");
@@ -464,6 +467,11 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
       r.fail(s["farfield_wake_speed_m_s"], "speedups.farfield_wake_speed_m_s",
              "must be > 0 with farfield_wake_by: neighbour_speed (it is the speed that wakes idle ice; for the "
              "window alone use farfield_wake_by: force with farfield_wake_force_weight: 0)");
+    r.num(s, "speedups", "farfield_front_speed_m_s", c.speedups.farfield_front_speed_m_s, non_negative, ">= 0");
+    if (c.speedups.farfield && c.speedups.farfield_wake_by == WakeBy::PushFront &&
+        !(c.speedups.farfield_front_speed_m_s > 0))
+      r.fail(s["farfield_front_speed_m_s"], "speedups.farfield_front_speed_m_s",
+             "must be > 0 with farfield_wake_by: push_front (the window's front follows the pieces faster than it)");
     r.boolean(s, "speedups", "moving_window", c.speedups.moving_window);
     r.num(s, "speedups", "moving_window_ahead_m", c.speedups.moving_window_ahead_m, positive, "> 0");
     r.num(s, "speedups", "moving_window_behind_m", c.speedups.moving_window_behind_m, positive, "> 0");
@@ -660,6 +668,7 @@ std::string dump_case_yaml(const Case& c) {
   line("  ", "farfield_wake_force_weight", num(c.speedups.farfield_wake_force_weight));
   line("  ", "farfield_wake_speed_m_s", num(c.speedups.farfield_wake_speed_m_s));
   line("  ", "farfield_wake_by", std::string(to_string(c.speedups.farfield_wake_by)));
+  line("  ", "farfield_front_speed_m_s", num(c.speedups.farfield_front_speed_m_s));
   line("  ", "moving_window", c.speedups.moving_window ? "true" : "false");
   line("  ", "moving_window_ahead_m", num(c.speedups.moving_window_ahead_m));
   line("  ", "moving_window_behind_m", num(c.speedups.moving_window_behind_m));

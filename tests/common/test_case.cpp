@@ -391,9 +391,13 @@ TEST(CaseLoaderErrors, SpeedupsKeysNamed) {
   expect_error("name: x\nspeedups: {farfield_ahead_m: -1}\n", {"speedups.farfield_ahead_m", ">= 0"});
   expect_error("name: x\nspeedups: {farfield_wake_force_weight: -0.1}\n", {"speedups.farfield_wake_force_weight", "[0, 1]"});
   expect_error("name: x\nspeedups: {farfield_wake_speed_m_s: -1}\n", {"speedups.farfield_wake_speed_m_s", ">= 0"});
-  expect_error("name: x\nspeedups: {farfield_wake_by: push}\n", {"speedups.farfield_wake_by", "force", "neighbour_speed"});
+  expect_error("name: x\nspeedups: {farfield_wake_by: push}\n",
+               {"speedups.farfield_wake_by", "force", "neighbour_speed", "push_front"});
   expect_error("name: x\nspeedups: {farfield: true, farfield_wake_by: neighbour_speed, farfield_wake_speed_m_s: 0}\n",
                {"speedups.farfield_wake_speed_m_s", "> 0", "neighbour_speed"});
+  expect_error("name: x\nspeedups: {farfield: true, farfield_wake_by: push_front, farfield_front_speed_m_s: 0}\n",
+               {"speedups.farfield_front_speed_m_s", "> 0", "push_front"});
+  expect_error("name: x\nspeedups: {farfield_front_speed_m_s: -0.1}\n", {"speedups.farfield_front_speed_m_s", ">= 0"});
   expect_error("name: x\nspeedups: {moving_window_behind_m: 0}\n", {"speedups.moving_window_behind_m", "> 0"});
   expect_error("name: x\nspeedups: {moving_window: true}\n", {"speedups.moving_window", "ice.settle: true"});
   expect_error("name: x\nice: {settle: true}\nspeedups: {farfield: true, farfield_ahead_m: 0.3, moving_window: true, "

@@ -1,4 +1,5 @@
-// The far-field rule (far_field.hpp): window, wake by force or by a neighbour's speed, membership at an update.
+// The far-field rule (far_field.hpp): window, wake by force, by a neighbour's speed or by the push front, membership
+// at an update.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -109,6 +110,31 @@ TEST(WakeRule, ByNeighbourSpeedKeepsTheMembershipRule) {
   EXPECT_TRUE(idle_after_update(by_neighbour, FarFieldZone::Ahead, false, true, kSlow));
   EXPECT_TRUE(idle_after_update(by_neighbour, FarFieldZone::Behind, false, false, kSlow));
   EXPECT_FALSE(idle_after_update(by_neighbour, FarFieldZone::Behind, true, false, kFast));
+}
+
+TEST(WakeRule, ByPushFrontTheFrontFollowsThePushAndBesideAndBehindWakeByForce) {
+  const WakeRule rule{0.02, 0.005, brash::WakeBy::PushFront, 0.005};
+  EXPECT_TRUE(rule.enabled());
+  EXPECT_TRUE(rule.front_follows_push());
+  EXPECT_TRUE(rule.reads_force());
+  EXPECT_FALSE(rule.reads_neighbour_speed());
+  // ahead of the front no force wakes; beside the hull and behind the stern the force rule's threshold
+  EXPECT_FALSE(wakes(rule, 1.0, 1.0, FarFieldZone::Ahead));
+  EXPECT_TRUE(wakes(rule, 0.0, 0.021, FarFieldZone::Beside));
+  EXPECT_FALSE(wakes(rule, 0.0, 0.019, FarFieldZone::Beside));
+  EXPECT_TRUE(wakes(rule, 0.021, 0.0, FarFieldZone::Behind));
+  EXPECT_TRUE(wakes(kWake, 0.021, 0.0, FarFieldZone::Ahead));  // the force rule wakes everywhere
+  // the front: ahead of the bow and of the foremost moving piece, never receding
+  const double none = -std::numeric_limits<double>::infinity();
+  EXPECT_DOUBLE_EQ(push_front_x(3.0, none, none, 0.25), 3.25);
+  EXPECT_DOUBLE_EQ(push_front_x(3.0, 3.5, 3.25, 0.25), 3.75);
+  EXPECT_DOUBLE_EQ(push_front_x(3.1, 2.0, 3.75, 0.25), 3.75);
+  // without a front speed there is no rule (the window alone)
+  EXPECT_FALSE((WakeRule{0.02, 0.005, brash::WakeBy::PushFront}.enabled()));
+  EXPECT_FALSE((WakeRule{0.02, 0.005, brash::WakeBy::PushFront}.front_follows_push()));
+  // membership: ahead keeps its state, behind idles once slow
+  EXPECT_TRUE(idle_after_update(rule, FarFieldZone::Ahead, true, false, kFast));
+  EXPECT_TRUE(idle_after_update(rule, FarFieldZone::Behind, false, false, kSlow));
 }
 
 TEST(WakeRule, TouchingIsCentreDistanceBelowTheSumOfTheRadii) {

@@ -7,6 +7,7 @@
 // so the resumed run must give the same mean resistance within the noise of the signal.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <algorithm>
 #include <chrono>
@@ -434,5 +435,17 @@ TEST(LiggghtsRunner, FarfieldSceneWakesPushedIceByTheCasesRuleUnlessTheWindowAlo
   const auto at = beside.find(" beside ");
   ASSERT_NE(at, std::string::npos) << beside;
   EXPECT_NEAR(std::stod(beside.substr(at + 8)), 0.5625 + 0.1, 2e-3);
+  // the push front is brash-ode's: refused by name before any output, with the copy to run
+  write_small_case(dir / "front", "[0.0, 0.6]", "0.01",
+                   "speedups:\n  farfield: true\n  farfield_ahead_m: 0.3\n  farfield_wake_by: push_front\n");
+  const fs::path err = dir / "front_stderr.txt";
+  const std::string cmd = brash::test::runner_command(dir / "front", dir / "front_run") + " --prepare-only > /dev/null 2> '" +
+                          err.string() + "'";
+  const int st = std::system(cmd.c_str());
+  EXPECT_TRUE(WIFEXITED(st) && WEXITSTATUS(st) == 2) << st;
+  const std::string why = brash::test::read_text(err);
+  EXPECT_NE(why.find("speedups.farfield_wake_by: push_front"), std::string::npos) << why;
+  EXPECT_NE(why.find("--set speedups.farfield_wake_by=neighbour_speed --out DIR"), std::string::npos) << why;
+  EXPECT_FALSE(fs::exists(dir / "front_run" / "in.lmp"));
   fs::remove_all(dir);
 }

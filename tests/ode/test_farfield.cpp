@@ -9,7 +9,10 @@
 // the window: one at rest (stays culled), one moving at 0.01 m/s (stays active).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include "brash/core/reference.hpp"
@@ -21,7 +24,7 @@ using brash::core::Vec3;
 namespace {
 constexpr int kChain = 12;
 constexpr double kR = 0.01, kSpeed = 0.05, kSteps = 2000;  // 1 s at dt 5e-4 s
-enum class Cull { None, WindowAlone, Wake, WakeNeighbour };
+enum class Cull { None, WindowAlone, Wake, WakeNeighbour, PushFront };
 
 struct End {
   std::vector<Vec3> x;       // chain, then the lone sphere at rest, then the moving one
@@ -40,20 +43,23 @@ void add_box_hull(World& w) {
   w.set_hull(std::move(v), std::move(t), Vec3::Zero(), Vec3(kSpeed, 0, 0));
 }
 
-End run_chain(Cull mode) {
+// gap_m: the chain's spheres that far apart instead of touching
+End run_chain(Cull mode, double gap_m = 0) {
   static OdeLibrary lib;
   Skips k;
   k.cull = mode != Cull::None;
   k.cull_ahead_m = 0.035;
   if (mode == Cull::Wake) k.wake_force_N = 1e-4, k.wake_speed_m_s = 0.001;
   if (mode == Cull::WakeNeighbour) k.wake_by = brash::WakeBy::NeighbourSpeed, k.wake_speed_m_s = 0.001;
+  if (mode == Cull::PushFront)
+    k.wake_by = brash::WakeBy::PushFront, k.wake_force_N = 1e-4, k.wake_speed_m_s = 0.001, k.front_speed_m_s = 0.001;
   // 20 quickstep iterations: the window alone's wall is a jam of hard contacts, whose reaction the default 8
   // iterations leave unconverged (2.6 N instead of 12 N, 490x the free push); the cull is the same either way
   StepperSettings st;
   st.iterations = 20;
   World w(brash::core::FluidParams{}, st, Frictions{}, k);
   const double z = kR - brash::core::analytic::height_for_fraction(kR, 0.9);  // floating
-  for (int i = 0; i < kChain; ++i) w.add_sphere(Vec3(0.001 + kR + 2 * kR * i, 0, z), kR, 900);
+  for (int i = 0; i < kChain; ++i) w.add_sphere(Vec3(0.001 + kR + (2 * kR + gap_m) * i, 0, z), kR, 900);
   w.add_sphere(Vec3(0.4, 0.1, z), kR, 900);
   w.add_sphere(Vec3(0.4, -0.1, z), kR, 900, Vec3(0.01, 0, 0));
   add_box_hull(w);
@@ -68,7 +74,7 @@ End run_chain(Cull mode) {
   return e;
 }
 
-double x0(int i) { return 0.001 + kR + 2 * kR * i; }
+double x0(int i, double gap_m = 0) { return 0.001 + kR + (2 * kR + gap_m) * i; }
 }  // namespace
 
 TEST(OdeFarField, WindowAloneMakesAnImmovableWall) {
@@ -109,3 +115,124 @@ TEST(OdeFarField, WakeRuleLetsThePushTravel) { check_push_travels(Cull::Wake); }
 // By a neighbour's speed: a culled sphere wakes when the active sphere of one of its contacts moves faster
 // than 0.001 m/s after the step.
 TEST(OdeFarField, WakeByNeighbourSpeedLetsThePushTravel) { check_push_travels(Cull::WakeNeighbour); }
+
+// By the push front: the window's front lies 0.035 m ahead of the foremost active sphere faster than 0.001 m/s, so
+// the chain the hull pushes is taken into the window as it starts to move; nothing wakes by the rule ahead of the
+// bow. The chain's spheres lie 3 mm apart, as the pieces of a bed with voids.
+TEST(OdeFarField, PushFrontTakesThePushedChainIntoTheWindow) {
+  constexpr double kGap = 0.003;
+  const End e = run_chain(Cull::PushFront, kGap), ref = run_chain(Cull::None, kGap),
+            wall = run_chain(Cull::WindowAlone, kGap);
+  for (int i = 0; i < kChain; ++i) {
+    EXPECT_GT(ref.x[i].x() - x0(i, kGap), 0.01) << "sphere " << i;  // without the cull: pushed 0.016 m or more
+    EXPECT_GT(e.x[i].x() - x0(i, kGap), 0.95 * (ref.x[i].x() - x0(i, kGap))) << "sphere " << i;
+  EXPECT_FALSE(e.culled[i]) << "sphere " << i;
+  }
+  EXPECT_EQ(e.woken, 0);
+  EXPECT_FALSE(e.culled[kChain + 1]) << "a lone moving sphere stays active";
+  // the lone moving sphere (x 0.4 -> 0.41) is the foremost moving one: the front follows it, past the one at rest
+  EXPECT_FALSE(e.culled[kChain]);
+  EXPECT_EQ(e.x[kChain].x(), 0.4);
+  EXPECT_LT(e.mean_fx_N / wall.mean_fx_N, 0.01);
+}
+
+namespace {
+// A loaded bed at rest: a floating row of 16 touching spheres in a narrow channel, held by an end wall against a
+// current of 0.05 m/s along x, so that every contact carries the drag of the spheres upstream of it (up to 15
+// times 1.6e-4 N, against a wake force of 3.7e-5 N). It is settled with every sphere integrated (damped, then
+// undamped), then run again from rest with the cull: the box hull at rest beside it, its window over the first
+// spheres upstream, the rest culled and pressed by the active ones through resting contacts.
+constexpr int kBed = 16;
+constexpr double kBedX0 = 0.02;   // first sphere's centre; the bow is at x = 0
+constexpr double kAhead = 0.045;  // the window: x < 0.045, the first two spheres
+
+struct Bed {
+  std::vector<Vec3> x;
+  double max_speed_m_s = 0;
+};
+
+brash::core::FluidParams current() {
+  brash::core::FluidParams f;
+  f.flow_velocity_m_s = Vec3(0.05, 0, 0);
+  return f;
+}
+
+void add_bed_walls(World& w) {
+  w.add_wall_box(Vec3(kBedX0 + 2 * kR * (kBed - 1) + kR + 0.005, 0, 0), Vec3(0.01, 0.2, 0.2));
+  w.add_wall_box(Vec3(0.2, kR + 0.005, 0), Vec3(0.5, 0.01, 0.2));
+  w.add_wall_box(Vec3(0.2, -kR - 0.005, 0), Vec3(0.5, 0.01, 0.2));
+}
+
+Bed settled_bed() {
+  static OdeLibrary lib;
+  World w(current(), StepperSettings{}, Frictions{});
+  const double z = kR - brash::core::analytic::height_for_fraction(kR, 0.9);
+  for (int i = 0; i < kBed; ++i) w.add_sphere(Vec3(kBedX0 + 2 * kR * i, 0, z), kR, 900);
+  add_bed_walls(w);
+  w.set_damping(0.02, 0.02);
+  for (int s = 0; s < 4000; ++s) w.step();
+  w.set_damping(0, 0);
+  for (int s = 0; s < 2000; ++s) w.step();
+  Bed b;
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    b.x.push_back(w.position(i));
+    b.max_speed_m_s = std::max(b.max_speed_m_s, w.velocity(i).norm());
+  }
+  return b;
+}
+
+struct BedRun {
+  long woken = 0;
+  std::size_t culled_end = 0;
+  double max_culled_shift_m = 0;  // largest move of a sphere culled at the end
+};
+
+BedRun run_bed(const Bed& bed, brash::WakeBy by) {
+  static OdeLibrary lib;
+  Skips k;
+  k.cull = true;
+  k.cull_ahead_m = kAhead;
+  k.wake_by = by;
+  k.wake_force_N = 1e-3 * 900 * (4.0 / 3.0 * M_PI * kR * kR * kR) * 9.81;  // the case's default, 1e-3 weight
+  k.wake_speed_m_s = 0.005;
+  k.front_speed_m_s = 0.005;
+  World w(current(), StepperSettings{}, Frictions{}, k);
+  for (const Vec3& x : bed.x) w.add_sphere(x, kR, 900);
+  add_bed_walls(w);
+  std::vector<double> v;
+  for (int i = 0; i < 8; ++i)
+    v.insert(v.end(), {i & 1 ? 0.0 : -0.06, i & 2 ? 0.03 : -0.03, i & 4 ? 0.03 : -0.03});
+  std::vector<dTriIndex> t = {0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5, 0, 1, 5, 0, 5, 4,
+                              2, 6, 7, 2, 7, 3, 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6};
+  w.set_hull(std::move(v), std::move(t), Vec3(0, 0.2, 0), Vec3::Zero());  // beside the bed: it touches nothing
+  for (int s = 0; s < 2000; ++s) w.step();
+  BedRun r;
+  r.woken = w.stats().woken;
+  for (std::size_t i = 0; i < w.size(); ++i)
+    if (w.culled(i)) {
+      ++r.culled_end;
+      r.max_culled_shift_m = std::max(r.max_culled_shift_m, (w.position(i) - bed.x[i]).norm());
+    }
+  std::printf("[loaded bed, wake by %s] woken %ld, culled at the end %zu of %zu, largest shift of a culled one %.3g m\n",
+              std::string(brash::to_string(by)).c_str(), r.woken, r.culled_end, w.size(), r.max_culled_shift_m);
+  return r;
+}
+}  // namespace
+
+// The force rule wakes a resting bed through its resting contacts (the load a culled sphere gets from its active
+// neighbours is unbalanced: its culled neighbours' side is not computed); the push front wakes nothing ahead of the
+// bow and, with nothing moving, stays where it is, so the bed stays culled.
+TEST(OdeFarField, PushFrontLeavesALoadedBedAtRestCulled) {
+  const Bed bed = settled_bed();
+  std::printf("[loaded bed] settled: largest speed %.3g m/s\n", bed.max_speed_m_s);
+  ASSERT_LT(bed.max_speed_m_s, 1e-4);
+  const BedRun by_force = run_bed(bed, brash::WakeBy::Force);
+  const BedRun by_front = run_bed(bed, brash::WakeBy::PushFront);
+  EXPECT_GT(by_force.woken, 10) << "the resting contacts wake the bed by force";
+  const auto outside = std::count_if(bed.x.begin(), bed.x.end(), [](const Vec3& x) { return x.x() > kAhead; });
+  EXPECT_EQ(outside, kBed - 2);
+  // the push front: nothing moves, so the front stays 0.045 m ahead of the bow; nothing wakes ahead of it
+  EXPECT_EQ(by_front.woken, 0);
+  EXPECT_EQ(by_front.culled_end, static_cast<std::size_t>(outside));
+  EXPECT_EQ(by_front.max_culled_shift_m, 0.0);
+}

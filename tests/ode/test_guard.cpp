@@ -299,6 +299,17 @@ TEST_F(OdeGuard, CaseFarFieldIsTheCullWithTheCasesWindowUnlessTheCommandLineSays
   EXPECT_NE(neighbour.err.find("speedups.farfield_wake_by: neighbour_speed"), std::string::npos) << neighbour.err;
   EXPECT_NE(neighbour.err.find("--set speedups.farfield_wake_by=force"), std::string::npos) << neighbour.err;
   EXPECT_FALSE(fs::exists(neighbour.run / "meta.json"));
+  // the push front runs with the case's front speed, and the log names it
+  yaml.replace(yaml.find("farfield_wake_by: neighbour_speed"), 33, "farfield_wake_by: push_front");
+  std::ofstream(dir / "case.yaml") << yaml;
+  const Result front = run(dir, "0.02", "--dt 5e-4", "push_front");
+  EXPECT_EQ(front.exit_code, 0) << front.err;
+  const auto meta = nlohmann::json::parse(front.meta, nullptr, false);
+  ASSERT_TRUE(meta.is_object()) << front.meta;
+  EXPECT_EQ(meta["skips"].value("cull_wake_by", std::string()), "push_front") << front.meta;
+  EXPECT_DOUBLE_EQ(meta["skips"].value("cull_front_speed_m_s", -1.0), 0.005) << front.meta;
+  const std::string log = slurp(front.run / "log.txt");
+  EXPECT_NE(log.find("the front 0.3 m ahead of the foremost piece faster than 0.005 m/s"), std::string::npos) << log;
 }
 
 // bench-ode --scene-from starts from another run's particle dump (its pieces, with their velocities) with the hull

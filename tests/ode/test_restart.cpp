@@ -221,6 +221,32 @@ TEST_F(Restart, CullGeomsGiveTheSameRunAndResume) {
   EXPECT_LE(max_diff(f / "particles" / "particles_400.csv", h / "particles" / "particles_400.csv", 5, 8), 1e-6);
 }
 
+// The far field woken by the push front keeps its front in the restart file: a run killed after step 230 and
+// resumed ends as the uninterrupted one (to the dumps' printed digits, as above).
+TEST_F(Restart, PushFrontResumesWithItsFront) {
+  const fs::path case_dir = kRoot / "push_front_case";
+  fs::create_directories(case_dir);
+  for (const char* f : {"case.yaml", "packing.csv", "packing.json"})
+    fs::copy_file(fs::path(BRASH_SMOKE_CASE) / f, case_dir / f, fs::copy_options::overwrite_existing);
+  std::ofstream(case_dir / "case.yaml", std::ios::app)
+      << "speedups:\n  farfield: true\n  farfield_ahead_m: 0.08\n  farfield_behind_m: 0.02\n"
+         "  farfield_beside_m: 0.0\n  farfield_wake_by: push_front\n  farfield_front_speed_m_s: 0.05\n";
+  const auto cmd = [&](const fs::path& out) {
+    return std::string("'") + BRASH_ODE_EXE + "' '" + case_dir.string() + "' --out '" + out.string() +
+           "' --duration 0.2 --restart-every 0.04 --no-progress --no-post";
+  };
+  const fs::path p = kRoot / "P", q = kRoot / "Q";
+  ASSERT_EQ(run(cmd(p) + " > /dev/null"), 0);
+  const auto skips = nlohmann::json::parse(slurp(p / "meta.json"))["skips"];
+  EXPECT_EQ(skips.value("cull_wake_by", std::string()), "push_front") << skips.dump();
+  EXPECT_NE(slurp(p / "hull_force.csv"), slurp(kRoot / "A" / "hull_force.csv"));  // the far field did act
+  ASSERT_EQ(run(cmd(q) + " --crash-after-step 230"), 137);
+  ASSERT_EQ(run(resume_cmd(q)), 0);
+  EXPECT_LE(max_diff(p / "hull_force.csv", q / "hull_force.csv", 1, 4), 1e-6);
+  EXPECT_LE(max_diff(p / "particles" / "particles_400.csv", q / "particles" / "particles_400.csv", 1, 4), 1e-9);
+  EXPECT_LE(max_diff(p / "particles" / "particles_400.csv", q / "particles" / "particles_400.csv", 5, 8), 1e-6);
+}
+
 // The grid broad phase (default) and ODE's sweep and prune hand the same pairs to the narrow phase and the joints
 // are made in a fixed order: the runs are the same to the last bit, plain, with culling (frozen spheres as static
 // obstacles, deep ones out of collision detection) and with end walls; a run resumes with the broad phase it had.

@@ -156,8 +156,12 @@ struct SpeedupSpec {
                                         // an immovable wall; docs/performance.md)
   double farfield_wake_speed_m_s = 0.005;  // with the wake: behind the stern (and at a run's start) a piece is idle
                                         // once slower than this
-  WakeBy farfield_wake_by = WakeBy::Force;  // what wakes an idle piece: force (the force weight above) or
-                                        // neighbour_speed (a touching active piece faster than the wake speed)
+  WakeBy farfield_wake_by = WakeBy::Force;  // what wakes an idle piece: force (the force weight above),
+                                        // neighbour_speed (a touching active piece faster than the wake speed) or
+                                        // push_front (brash-ode: ahead of the bow the window's front follows the
+                                        // push; beside the hull and behind the stern by force)
+  double farfield_front_speed_m_s = 0.005;  // push_front: the front lies farfield_ahead_m ahead of the foremost
+                                        // active piece faster than this (docs/ode.md, "The far field on ODE")
   bool moving_window = false;           // only the ice around the hull in the scene: the bed ahead held out until
                                         // the front reaches it, the ice far behind the stern removed
   double moving_window_ahead_m = 1.0;   // the front: this far ahead of the bow and of the foremost moving piece
@@ -173,8 +177,10 @@ struct SpeedupSpec {
 
 // The far field with no wake rule: idle ice is an immovable wall to the pushed bed (biased high).
 inline bool farfield_window_alone(const SpeedupSpec& s) {
-  return s.farfield && (s.farfield_wake_by == WakeBy::Force ? !(s.farfield_wake_force_weight > 0)
-                                                             : !(s.farfield_wake_speed_m_s > 0));
+  const bool by_force = s.farfield_wake_by != WakeBy::NeighbourSpeed && s.farfield_wake_force_weight > 0;
+  const bool by_speed = s.farfield_wake_by == WakeBy::PushFront ? s.farfield_front_speed_m_s > 0
+                        : s.farfield_wake_by != WakeBy::Force && s.farfield_wake_speed_m_s > 0;
+  return s.farfield && !by_force && !by_speed;
 }
 
 // Run-time guards (docs/stability.md, "Run-time guards"): what stops a run that is going wrong. The other

@@ -21,12 +21,18 @@ double wake_force_N(double weight_fraction, double mean_diameter_m, double ice_d
   return weight_fraction * weight_N;
 }
 
-bool wakes(const WakeRule& rule, double fx_N, double fy_N) {
-  return rule.by == WakeBy::Force && rule.enabled() && fx_N * fx_N + fy_N * fy_N > rule.force_N * rule.force_N;
+bool wakes(const WakeRule& rule, double fx_N, double fy_N, FarFieldZone zone) {
+  const bool by_force =
+      rule.by == WakeBy::Force || (rule.by == WakeBy::PushFront && zone != FarFieldZone::Ahead);
+  return by_force && rule.force_N > 0 && fx_N * fx_N + fy_N * fy_N > rule.force_N * rule.force_N;
+}
+
+double push_front_x(double bow_x_m, double foremost_moving_x_m, double previous_front_x_m, double ahead_m) {
+  return std::max(previous_front_x_m, std::max(bow_x_m, foremost_moving_x_m) + ahead_m);
 }
 
 bool wakes_by_neighbour(const WakeRule& rule, const Vec3& v) {
-  return rule.by == WakeBy::NeighbourSpeed && rule.enabled() && v.squaredNorm() > rule.speed_m_s * rule.speed_m_s;
+  return rule.reads_neighbour_speed() && v.squaredNorm() > rule.speed_m_s * rule.speed_m_s;
 }
 
 bool idle_after_update(const WakeRule& rule, FarFieldZone zone, bool was_idle, bool first_update,
@@ -41,7 +47,7 @@ MovingWindow moving_window(double stern_x_m, double bow_x_m, double foremost_mov
                            double behind_m, double ahead_m) {
   MovingWindow w;
   w.remove_below_x_m = stern_x_m - behind_m;
-  w.insert_below_x_m = std::max(previous_front_x_m, std::max(bow_x_m, foremost_moving_x_m) + ahead_m);
+  w.insert_below_x_m = push_front_x(bow_x_m, foremost_moving_x_m, previous_front_x_m, ahead_m);
   return w;
 }
 

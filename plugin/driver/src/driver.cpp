@@ -176,11 +176,10 @@ void refuse_what_the_engine_cannot_run(const Case& c, const fs::path& case_file,
     refuse("speedups.farfield", "the idle far field", "integrates every piece (speedups.farfield: false)");
   if (c.speedups.moving_window && !engine.moves_window())
     refuse("speedups.moving_window", "the moving window", "runs the whole channel (speedups.moving_window: false)");
-  if (const std::string why = engine.neighbour_speed_wake_refusal();
-      c.speedups.farfield && engine.idles_far_field() && c.speedups.farfield_wake_by == WakeBy::NeighbourSpeed &&
-      !why.empty()) {
-    reasons.push_back("speedups.farfield_wake_by: neighbour_speed: " + why);
-    sets.push_back(" --set speedups.farfield_wake_by=force");
+  if (const Engine::WakeRefusal no = engine.wake_refusal(c.speedups.farfield_wake_by);
+      c.speedups.farfield && engine.idles_far_field() && !no.why.empty()) {
+    reasons.push_back(fmt::format("speedups.farfield_wake_by: {}: {}", to_string(c.speedups.farfield_wake_by), no.why));
+    sets.push_back(fmt::format(" --set speedups.farfield_wake_by={}", to_string(no.instead)));
   }
   if (reasons.empty()) return;
   throw InputError(fmt::format("{}: {}. Run a copy made with `brash-case derive {}{} --out DIR`", case_file.string(),

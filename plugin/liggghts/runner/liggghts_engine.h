@@ -24,6 +24,12 @@ class LiggghtsEngine final : public run::Engine {
   bool runs_half_channel() const override { return true; }
   bool idles_far_field() const override { return true; }
   bool moves_window() const override { return true; }
+  WakeRefusal wake_refusal(WakeBy by) const override {
+    if (by != WakeBy::PushFront) return {};
+    return {"fix brash/farfield has no push front (brash-ode's far field ahead of the bow, for its rigid contacts); "
+            "on LIGGGHTS' soft contacts the pushed ice moves into the idle ice, which the neighbour-speed wake sees",
+            WakeBy::NeighbourSpeed};
+  }
   nlohmann::json meta() const override;
   void load(const Case& c, const std::filesystem::path& case_file, const std::vector<Sphere>& spheres) override;
   void write_scene(const std::filesystem::path& run_dir, bool resume) override;

@@ -77,17 +77,20 @@ nlohmann::json OdeEngine::meta() const {
                  {"cull_behind_m", k.cull_behind_m},
                  {"cull_side_m", k.cull_side_m}, {"cull_every_steps", k.cull_every},
                  {"cull_wake_force_N", k.wake_force_N}, {"cull_wake_speed_m_s", k.wake_speed_m_s},
-                 {"cull_wake_by", std::string(to_string(k.wake_by))}}},
+                 {"cull_wake_by", std::string(to_string(k.wake_by))},
+                 {"cull_front_speed_m_s", k.front_speed_m_s}}},
       {"end_walls", options_.end_walls},
       {"settle_s", options_.settle_s},
       {"ode_options", options_json(options_)},
       {"resumes", nlohmann::json::array()}};
 }
 
-std::string OdeEngine::neighbour_speed_wake_refusal() const {
-  return "on brash-ode's rigid contacts a pushed piece stops at the idle ice instead of moving into it, so the push "
-         "never wakes it (+8.45 % ± 0.81 % mean resistance on cases/jbc_narrow, docs/ode.md \"The far field on "
-         "ODE\"); brash-ode idles the far field with the force rule";
+OdeEngine::WakeRefusal OdeEngine::wake_refusal(WakeBy by) const {
+  if (by != WakeBy::NeighbourSpeed) return {};
+  return {"on brash-ode's rigid contacts a pushed piece stops at the idle ice instead of moving into it, so the push "
+          "never wakes it (+8.45 % ± 0.81 % mean resistance on cases/jbc_narrow, docs/ode.md \"The far field on "
+          "ODE\"); brash-ode idles the far field with the force rule",
+          WakeBy::Force};
 }
 
 void OdeEngine::load(const Case& case_in, const fs::path& case_file, const std::vector<Sphere>& packing) {
@@ -95,10 +98,12 @@ void OdeEngine::load(const Case& case_in, const fs::path& case_file, const std::
   if (!(st.dt_s > 0) || !std::isfinite(st.dt_s)) throw InputError(fmt::format("--dt {}: must be > 0", st.dt_s));
   // The neighbour-speed wake needs the pushed ice to move into the idle ice (the driver refuses it with the case's
   // far field; here --cull with the case's wake rule)
-  if (const Skips k = cull_skips(options_, case_in); k.cull && k.wake_by == WakeBy::NeighbourSpeed)
-    throw InputError(fmt::format("{}: speedups.farfield_wake_by: neighbour_speed: {}. Run a copy made with "
-                                 "`brash-case derive {} --set speedups.farfield_wake_by=force --out DIR`",
-                                 case_file.string(), neighbour_speed_wake_refusal(), case_file.parent_path().string()));
+  if (const Skips k = cull_skips(options_, case_in); k.cull)
+    if (const WakeRefusal no = wake_refusal(k.wake_by); !no.why.empty())
+      throw InputError(fmt::format("{}: speedups.farfield_wake_by: {}: {}. Run a copy made with "
+                                   "`brash-case derive {} --set speedups.farfield_wake_by={} --out DIR`",
+                                   case_file.string(), to_string(k.wake_by), no.why, case_file.parent_path().string(),
+                                   to_string(no.instead)));
   scene_ = std::make_unique<Scene>();
   Scene& s = *scene_;
   Case c = case_in;
@@ -264,7 +269,11 @@ void Stepping::log_scene() {
                     k.cull_every,
                     !wake.enabled()                       ? std::string("the window alone (no wake rule)")
                     : wake.by == WakeBy::NeighbourSpeed ? fmt::format("woken by a neighbour faster than {} m/s", wake.speed_m_s)
-                                                          : fmt::format("woken by a horizontal force above {:.4g} N", wake.force_N)));
+                    : wake.by == WakeBy::PushFront
+                        ? fmt::format("the front {} m ahead of the foremost piece faster than {} m/s; beside and "
+                                      "behind woken by a horizontal force above {:.4g} N",
+                                      k.cull_ahead_m, wake.front_speed_m_s, wake.force_N)
+                        : fmt::format("woken by a horizontal force above {:.4g} N", wake.force_N)));
   }
   if (!o_.scene_from.empty())
     log(fmt::format("scene from {} at t = {} s of its run: {} pieces, hull at x = {:.4g} m (pieces numbered in the "
@@ -436,8 +445,12 @@ bool Stepping::step(long k, run::Attempt& a) {
   a.t_last_s = t;
   a.particle_steps = double(w.stats().particle_steps - ps_loop0_);
   if (k % n_check_ == 0 &&
-      monitor_.progress(t, a.particle_steps, fmt::format("Fx {:+.3f} N  awake {}  contacts {}", f.x(), w.stats().awake_last,
-                                                         w.stats().contacts_last)) &&
+      monitor_.progress(t, a.particle_steps,
+                        fmt::format("Fx {:+.3f} N  awake {}  contacts {}{}", f.x(), w.stats().awake_last,
+                                    w.stats().contacts_last,
+                                    w.wake_rule().enabled() ? fmt::format("  woken {} (by speed {})", w.stats().woken,
+                                                                          w.stats().woken_by_speed)
+                                                            : "")) &&
       monitor_.stop_reason() == run::StopReason::EarlyStop) {
     log(fmt::format("early stop at t = {:.4f} s", t));
     dump(k);
@@ -493,6 +506,7 @@ void Stepping::conclude(run::Attempt& a, RunSummary& summary) {
                             {"quickstep", st.wall_step_s - stats0_.wall_step_s}};
   a.meta["mean_fx_window_N"] = summary.mean_fx_window_N;
   a.meta["cull_geoms_out_max"] = st.geoms_out_max;
+  a.meta["cull_woken"] = {{"all", st.woken}, {"by_neighbour_speed", st.woken_by_speed}};
   if (monitor_.stop_reason() == run::StopReason::None)
     log(fmt::format("done: {} steps in {:.1f} s ({:.3g} particle-steps/s, {:.1f} s wall per simulated s); mean Fx over "
                     "[{}, {}] s = {:.4f} N",

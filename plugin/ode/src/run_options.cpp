@@ -128,6 +128,7 @@ Skips cull_skips(const RunOptions& o, const Case& c) {
   k.wake_force_N = core::wake_force_N(weight, c.ice.diameter_mean_m, c.ice.density_kg_m3, c.water.gravity_m_s2);
   k.wake_speed_m_s = o.cull_wake_speed_m_s >= 0 ? o.cull_wake_speed_m_s : c.speedups.farfield_wake_speed_m_s;
   k.wake_by = c.speedups.farfield_wake_by;
+  k.front_speed_m_s = c.speedups.farfield_front_speed_m_s;
   return k;
 }
 

@@ -187,6 +187,7 @@ core::FarFieldWindow World::cull_window() const {
       core::far_field_window(h.x() + hull_min_[0], h.x() + hull_max_[0], skips_.cull_behind_m, skips_.cull_ahead_m);
   w.centre_y_m = h.y();
   w.half_width_m = hull_half_beam() + skips_.cull_side_m;
+  if (wake_rule().front_follows_push()) w.hi_x_m = std::max(w.hi_x_m, push_front_x_m_);
   return w;
 }
 
@@ -211,8 +212,19 @@ void World::thaw(SphereRec& s) {
 // spheres' auto-disable flags.
 void World::update_cull() {
   if (!hull_body_ || (!skips_.cull && !(skips_.auto_disable && skips_.auto_disable_far_only))) return;
-  const core::FarFieldWindow window = cull_window();
   const core::WakeRule rule = wake_rule();
+  if (rule.front_follows_push()) {
+    double foremost = -std::numeric_limits<double>::infinity();  // the foremost active piece faster than U
+    const double u2 = rule.front_speed_m_s * rule.front_speed_m_s;
+    for (const auto& s : spheres_) {
+      if (s.culled || s.retired) continue;
+      const dReal* v = dBodyGetLinearVel(s.body);
+      if (v[0] * v[0] + v[1] * v[1] + v[2] * v[2] > u2) foremost = std::max(foremost, dBodyGetPosition(s.body)[0]);
+    }
+    push_front_x_m_ =
+        core::push_front_x(hull_position().x() + hull_max_[0], foremost, push_front_x_m_, skips_.cull_ahead_m);
+  }
+  const core::FarFieldWindow window = cull_window();
   const bool first_update = stats_.steps == 0;
   for (auto& s : spheres_) {
     if (s.retired) continue;
@@ -280,21 +292,28 @@ void World::wake(SphereRec& s) {
 // the next step on.
 void World::wake_pushed() {
   const core::WakeRule rule = wake_rule();
-  if (rule.by == WakeBy::NeighbourSpeed) {
+  if (rule.reads_neighbour_speed())
     for (std::size_t k = 0; k < idle_fed_.size(); ++k) {
       SphereRec& s = spheres_[idle_fed_[k]];
-      if (s.culled && core::wakes_by_neighbour(rule, idle_toucher_v_[k])) wake(s);
+      if (s.culled && core::wakes_by_neighbour(rule, idle_toucher_v_[k])) {
+        wake(s);
+        ++stats_.woken_by_speed;
+      }
     }
-    return;
-  }
+  if (!rule.reads_force()) return;
   for (std::size_t k = 0; k < idle_fed_.size(); ++k) {
     SphereRec& s = spheres_[idle_fed_[k]];
     s.push_x_N -= idle_feedback_[k].f1[0];
     s.push_y_N -= idle_feedback_[k].f1[1];
   }
+  const core::FarFieldWindow window = cull_window();
   for (std::size_t i : idle_fed_) {
     SphereRec& s = spheres_[i];
-    if (s.culled && core::wakes(rule, s.push_x_N, s.push_y_N)) wake(s);
+    const dReal* p = dBodyGetPosition(s.body);
+    // by push front the zone decides (no wake ahead): taken only then, the force rule wakes anywhere
+    const core::FarFieldZone zone =
+        rule.by == WakeBy::PushFront ? core::far_field_zone(window, p[0], p[1]) : core::FarFieldZone::Beside;
+    if (s.culled && core::wakes(rule, s.push_x_N, s.push_y_N, zone)) wake(s);
     s.push_x_N = s.push_y_N = 0;
   }
 }
@@ -531,6 +550,7 @@ void World::create_joints() {
     if (x.key != y.key) return x.key < y.key;
     return x.slot < y.slot;
   });
+  const core::WakeRule rule = wake_rule();
   for (const auto& o : joint_order_) {
     auto& p = pending_[o.index];
     dJointID j = dJointCreateContact(world_, contacts_, &p.c);
@@ -540,10 +560,11 @@ void World::create_joints() {
       dJointSetFeedback(j, &hull_feedback_.back());
     } else if (p.idle != kNoSphere) {
       idle_fed_.push_back(p.idle);
-      if (skips_.wake_by == WakeBy::Force) {
+      if (rule.reads_force()) {
         idle_feedback_.emplace_back();
         dJointSetFeedback(j, &idle_feedback_.back());
-      } else {
+      }
+      if (rule.reads_neighbour_speed()) {
         const dReal* v = dBodyGetLinearVel(p.ba);  // before the step
         idle_toucher_v_.emplace_back(v[0], v[1], v[2]);
       }
@@ -599,6 +620,7 @@ void World::save_state(restart::Writer& w) const {
   w.put<double>(stats_.wall_fluid_s);
   w.put<double>(stats_.wall_collide_s);
   w.put<double>(stats_.wall_step_s);
+  w.put<double>(push_front_x_m_);
   if (hull_body_) {
     const dReal* p = dBodyGetPosition(hull_body_);
     const dReal* v = dBodyGetLinearVel(hull_body_);
@@ -648,6 +670,7 @@ void World::load_state(restart::Reader& r) {
   stats_.wall_fluid_s = r.get<double>();
   stats_.wall_collide_s = r.get<double>();
   stats_.wall_step_s = r.get<double>();
+  push_front_x_m_ = r.get<double>();
   stats_.t_s = static_cast<double>(stats_.steps) * stepper_.dt_s;
   if (hull_body_) {
     const Vec3 p = r.get_vec3(), v = r.get_vec3();

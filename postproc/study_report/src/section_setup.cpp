@@ -52,8 +52,10 @@ std::string our_far_field(const Column& col) {
   const std::string window = col.c->speedups.moving_window ? "; moving window" : "";
   if (!col.c->speedups.farfield) return (window.empty() ? "every piece integrated" : "every piece in the window integrated") + window;
   if (farfield_window_alone(col.c->speedups)) return "far field, window alone (biased high)" + window;
-  return (col.c->speedups.farfield_wake_by == WakeBy::Force ? "far field with the wake rule"
-                                                            : "far field, woken by a neighbour's speed") +
+  const WakeBy by = col.c->speedups.farfield_wake_by;
+  return (by == WakeBy::Force           ? "far field with the wake rule"
+          : by == WakeBy::NeighbourSpeed ? "far field, woken by a neighbour's speed"
+                                         : "far field, its front following the push") +
          window;
 }
 

@@ -11,8 +11,18 @@ namespace brash {
 //     the wake runs through the whole bed.
 //   NeighbourSpeed: an active piece touching it moves faster than the wake speed. A resting bed stays idle;
 //     the push wakes the ice it moves.
-enum class WakeBy { Force, NeighbourSpeed };
+//   PushFront: ahead of the bow no wake: the window's front follows the push (it lies the window's distance
+//     ahead of the foremost piece faster than the front speed, and never recedes), so the push always meets
+//     active ice; beside the hull and behind the stern, by force.
+enum class WakeBy { Force, NeighbourSpeed, PushFront };
 
-constexpr std::string_view to_string(WakeBy w) { return w == WakeBy::Force ? "force" : "neighbour_speed"; }
+constexpr std::string_view to_string(WakeBy w) {
+  switch (w) {
+    case WakeBy::Force: return "force";
+    case WakeBy::NeighbourSpeed: return "neighbour_speed";
+    case WakeBy::PushFront: return "push_front";
+  }
+  return "force";
+}
 
 }  // namespace brash

@@ -11,6 +11,10 @@
 //     idle pieces get no gravity or fluid force) exceeds F;
 //   - by neighbour speed (V > 0): an idle piece wakes as soon as an active piece touching it moves faster
 //     than V (a resting bed stays idle, where the force rule wakes it through its resting contacts);
+//   - by push front (brash-ode; front speed U > 0): ahead of the bow nothing wakes: the window's front lies
+//     `ahead` beyond the bow and beyond the foremost active piece faster than U, and never recedes, so the push
+//     meets active ice instead of a wall (on rigid contacts the pushed ice shows the push neither as its speed at
+//     the wall nor as a force apart from its resting load); beside the hull and behind the stern, by force;
 //   - at a membership update a piece inside the window is active; ahead of the bow a piece keeps its state
 //     (one the push has reached stays active: re-freezing slow pieces of a loaded bed would jam it again);
 //     behind the stern, beside the hull and at a run's first update a piece is idle once no faster than V.
@@ -42,11 +46,23 @@ enum class FarFieldZone { Inside, Ahead, Behind, Beside };
 FarFieldZone far_field_zone(const FarFieldWindow& w, double x_m, double y_m);
 
 struct WakeRule {
-  double force_N = 0;    // by force: wake when the horizontal force exceeds this; 0: never (the window alone)
-  double speed_m_s = 0;  // where the speed decides (see above): idle once |v| <= this; by neighbour speed
-                         // also: wake when a touching active piece is faster than this (0: never)
+  double force_N = 0;    // by force (by push front: beside and behind): wake when the horizontal force exceeds
+                         // this; 0: never (the window alone)
+  double speed_m_s = 0;  // where the speed decides (see above): idle once |v| <= this; by neighbour speed also:
+                         // wake when a touching active piece is faster than this (0: never)
   WakeBy by = WakeBy::Force;
-  bool enabled() const { return by == WakeBy::Force ? force_N > 0 : speed_m_s > 0; }
+  double front_speed_m_s = 0;  // by push front: the front follows the pieces faster than this (0: no rule)
+  bool enabled() const {
+    switch (by) {
+      case WakeBy::Force: return force_N > 0;
+      case WakeBy::NeighbourSpeed: return speed_m_s > 0;
+      case WakeBy::PushFront: return front_speed_m_s > 0;
+    }
+    return false;
+  }
+  bool reads_force() const { return by != WakeBy::NeighbourSpeed && force_N > 0; }
+  bool reads_neighbour_speed() const { return by == WakeBy::NeighbourSpeed && speed_m_s > 0; }
+  bool front_follows_push() const { return by == WakeBy::PushFront && front_speed_m_s > 0; }
 };
 
 // The case file's form (speedups.farfield_wake_force_weight): a fraction of the weight of a piece of the
@@ -54,8 +70,13 @@ struct WakeRule {
 double wake_force_N(double weight_fraction, double mean_diameter_m, double ice_density_kg_m3,
                     double gravity_m_s2);
 
-// Does an idle piece with this horizontal force on it wake now? (by force: |F_h| > F; never otherwise)
-bool wakes(const WakeRule& rule, double fx_N, double fy_N);
+// Does an idle piece with this horizontal force on it wake now? (by force: |F_h| > F; by push front also, but only
+// in `zone` Beside or Behind; never otherwise)
+bool wakes(const WakeRule& rule, double fx_N, double fy_N, FarFieldZone zone = FarFieldZone::Beside);
+
+// The window's front with the push front (WakeBy::PushFront): `ahead` beyond the bow and beyond the foremost active
+// piece faster than the front speed (-infinity: none), never behind the previous front.
+double push_front_x(double bow_x_m, double foremost_moving_x_m, double previous_front_x_m, double ahead_m);
 
 // Does an idle piece touching a piece with this velocity wake now? (by neighbour speed: |v| > V; never
 // otherwise). An idle neighbour has v = 0, so the caller need not know whether the neighbour is active.

@@ -62,9 +62,13 @@ class Engine {
   virtual bool runs_half_channel() const { return false; }
   virtual bool idles_far_field() const { return false; }
   virtual bool moves_window() const { return false; }  // speedups.moving_window
-  // Why the far field's neighbour-speed wake (speedups.farfield_wake_by: neighbour_speed) would be wrong on this
-  // engine; empty: it is not.
-  virtual std::string neighbour_speed_wake_refusal() const { return {}; }
+  // Why the far field's wake rule `by` (speedups.farfield_wake_by) would be wrong on this engine or is not built
+  // in it, and the rule to use instead; empty: the engine runs it.
+  struct WakeRefusal {
+    std::string why;
+    WakeBy instead = WakeBy::Force;
+  };
+  virtual WakeRefusal wake_refusal(WakeBy /*by*/) const { return {}; }
 
   // Checks the case against what this engine can run and reads what the scene needs (hull, packing), before
   // any output is written. Throws InputError naming the case file.

@@ -75,7 +75,7 @@ class OdeEngine final : public run::Engine {
   bool starts_from_settled_bed() const override { return true; }
   // speedups.farfield: the far-field rule as --cull, with the case's window, period and wake (cull_skips).
   bool idles_far_field() const override { return true; }
-  std::string neighbour_speed_wake_refusal() const override;
+  WakeRefusal wake_refusal(WakeBy by) const override;
   void load(const Case& c, const std::filesystem::path& case_file, const std::vector<Sphere>& spheres) override;
   void write_scene(const std::filesystem::path&, bool) override {}  // the scene lives in this process
   std::vector<std::string> restarts(const std::filesystem::path& run_dir) const override;

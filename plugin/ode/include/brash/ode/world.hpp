@@ -32,6 +32,7 @@
 #include <array>
 #include <cstdint>
 #include <deque>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -94,14 +95,16 @@ struct Skips {
   // The wake rule: a culled sphere wakes when the horizontal force of the step's contacts on it exceeds
   // wake_force_N (read from the joints' feedback after the step), or (wake_by NeighbourSpeed) when an active
   // sphere in contact with it moved faster than wake_speed_m_s into the step (before it: the hard contact with a
-  // culled sphere stops it within the step); at an update a sphere ahead of the bow keeps
+  // culled sphere stops it within the step); with wake_by PushFront nothing wakes ahead of the bow: the window's
+  // front follows the spheres faster than front_speed_m_s (core::push_front_x); at an update a sphere ahead of the bow keeps
   // its state, one behind the stern, beside the hull or at the first update is culled once no faster than
   // wake_speed_m_s. wake_force_N = 0: the window alone (the culled ice is an immovable wall that jams the
   // pushed bed, docs/performance.md). brash-ode sets both from the case's speedups.farfield_wake_*.
   double wake_force_N = 0;
   double wake_speed_m_s = 0;
   WakeBy wake_by = WakeBy::Force;
-  core::WakeRule wake_rule() const { return {wake_force_N, wake_speed_m_s, wake_by}; }
+  double front_speed_m_s = 0;  // by push front: the window's front follows the pieces faster than this
+  core::WakeRule wake_rule() const { return {wake_force_N, wake_speed_m_s, wake_by, front_speed_m_s}; }
   // Culled spheres more than 3 largest diameters inside the frozen zone also leave collision detection
   // (dGeomDisable): they can touch only other culled spheres, which give no contact, so the contacts and the
   // trajectory are the same (test_ode_restart: CullGeomsGiveTheSameRun), but the broad phase then costs the
@@ -117,7 +120,8 @@ struct Stats {
   std::size_t contacts_last = 0;
   std::size_t awake_last = 0;
   std::size_t geoms_out_max = 0;    // most culled spheres left out of collision detection at once (cull_geoms)
-  long woken = 0;                   // culled spheres woken by the wake rule's force test
+  long woken = 0;                   // culled spheres woken by the wake rule
+  long woken_by_speed = 0;          // ... of which by a neighbour's speed
 };
 
 class World {
@@ -196,6 +200,7 @@ class World {
   double hull_half_beam() const { return std::max(std::abs(hull_min_[1]), std::abs(hull_max_[1])); }
 
   const Stats& stats() const { return stats_; }
+  core::WakeRule wake_rule() const;  // the cull's (none without the cull)
   const StepperSettings& stepper() const { return stepper_; }
   const core::FluidParams& fluid() const { return fluid_; }
 
@@ -220,7 +225,6 @@ class World {
   static constexpr std::size_t kPartnerWall = std::size_t(1) << 40, kPartnerHull = std::size_t(1) << 41;
   void apply_fluid();
   core::FarFieldWindow cull_window() const;
-  core::WakeRule wake_rule() const;
   void update_cull();
   void update_cull_geoms(const core::FarFieldWindow& window);
   void wake_pushed();
@@ -254,6 +258,8 @@ class World {
   std::vector<std::size_t> idle_fed_;
   std::vector<Vec3> idle_toucher_v_;
   bool cull_geoms_stale_ = false;
+  // Wake by push front: the window's front (core::push_front_x; -infinity before the first update; in restarts)
+  double push_front_x_m_ = -std::numeric_limits<double>::infinity();
   std::vector<dContact> contact_buf_;
   // Contacts of one step, created as joints in a fixed order (sphere index, partner) after the collision
   // pass, so the joint order does not depend on the broad phase's internal order (needed for exact restarts).
