@@ -177,10 +177,13 @@ struct SpeedupSpec {
 
 // The far field with no wake rule: idle ice is an immovable wall to the pushed bed (biased high).
 inline bool farfield_window_alone(const SpeedupSpec& s) {
-  const bool by_force = s.farfield_wake_by != WakeBy::NeighbourSpeed && s.farfield_wake_force_weight > 0;
-  const bool by_speed = s.farfield_wake_by == WakeBy::PushFront ? s.farfield_front_speed_m_s > 0
-                        : s.farfield_wake_by != WakeBy::Force && s.farfield_wake_speed_m_s > 0;
-  return s.farfield && !by_force && !by_speed;
+  if (!s.farfield) return false;
+  switch (s.farfield_wake_by) {  // as core::WakeRule::enabled
+    case WakeBy::Force: return !(s.farfield_wake_force_weight > 0);
+    case WakeBy::NeighbourSpeed: return !(s.farfield_wake_speed_m_s > 0);
+    case WakeBy::PushFront: return !(s.farfield_front_speed_m_s > 0);
+  }
+  return true;
 }
 
 // Run-time guards (docs/stability.md, "Run-time guards"): what stops a run that is going wrong. The other

@@ -309,11 +309,8 @@ void World::wake_pushed() {
   const core::FarFieldWindow window = cull_window();
   for (std::size_t i : idle_fed_) {
     SphereRec& s = spheres_[i];
-    const dReal* p = dBodyGetPosition(s.body);
-    // by push front the zone decides (no wake ahead): taken only then, the force rule wakes anywhere
-    const core::FarFieldZone zone =
-        rule.by == WakeBy::PushFront ? core::far_field_zone(window, p[0], p[1]) : core::FarFieldZone::Beside;
-    if (s.culled && core::wakes(rule, s.push_x_N, s.push_y_N, zone)) wake(s);
+    const dReal* p = dBodyGetPosition(s.body);  // the zone: by push front nothing wakes ahead
+    if (s.culled && core::wakes(rule, s.push_x_N, s.push_y_N, core::far_field_zone(window, p[0], p[1]))) wake(s);
     s.push_x_N = s.push_y_N = 0;
   }
 }
