@@ -10,7 +10,8 @@
 # env: CASE (cases/jbc_narrow), SIDE_A ("1"), SIDE_B ("2"): a side is NP[:section.key=value,...] (MPI ranks, then
 # edits of the case, as in bench/speed_vs_error.sh), e.g. SIDE_B="1:run.timestep_s=2.0e-4" for the dt knob; NP
 # `ode`, `ode@DT` or `ode@DT@ITERATIONS` runs the side on brash-ode instead (at its default step, or `--dt DT`, and
-# `--iterations ITERATIONS` quickstep iterations), then brash-post;
+# `--iterations ITERATIONS` quickstep iterations), then brash-post; ODE_ARGS: more brash-ode options for every ODE
+# side (e.g. "--settle 0.2"; the run names do not show them: give such an ensemble its own OUT);
 # TOL_PCT (1): the tolerance the CI is tested against (2 % for a speed-up knob). The wall-time ratio A / B of the
 # summed runs is printed too (a knob's speed-up; only as fair as the load was alike when the two sides ran).
 # Part of make bench (~1 h on a fresh machine; re-prints once the runs exist). 1-rank runs go two at a time (JOBS,
@@ -80,6 +81,8 @@ run_one() {  # seed, side
     local dt it ode_args=(); dt="$(ode_field "$2" 1)"; it="$(ode_field "$2" 2)"
     [ -n "$dt" ] && ode_args+=(--dt "$dt")
     [ -n "$it" ] && ode_args+=(--iterations "$it")
+    read -r -a extra <<< "${ODE_ARGS:-}"
+    ode_args+=("${extra[@]}")
     { "$bin/brash-ode" "$case_dir" --out "$run" "${ode_args[@]}" --no-progress && "$bin/brash-post" "$run"; } > "$run.log" 2>&1 ||
       echo "   seed $1, $2 failed (exit $?): see $run.log"
   else

@@ -184,10 +184,14 @@ Bed settled_bed() {
 struct BedRun {
   long woken = 0;
   std::size_t culled_end = 0;
-  double max_culled_shift_m = 0;  // largest move of a sphere culled at the end
+  std::size_t culled_while_settling = 0;  // most spheres culled in a step before the cull began
+  std::size_t ahead_at_cull_start = 0;    // spheres beyond the window's 0.045 m when the cull began
+  double max_culled_shift_m = 0;  // largest move of a sphere culled at the end, since the cull began
+  double max_settle_shift_m = 0;  // largest move of a sphere while settling
 };
 
-BedRun run_bed(const Bed& bed, brash::WakeBy by) {
+// settle_steps: the whole bed integrated that many steps before the cull begins (World::begin_cull_at_step)
+BedRun run_bed(const Bed& bed, brash::WakeBy by, long settle_steps = 0) {
   static OdeLibrary lib;
   Skips k;
   k.cull = true;
@@ -205,17 +209,40 @@ BedRun run_bed(const Bed& bed, brash::WakeBy by) {
   std::vector<dTriIndex> t = {0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5, 0, 1, 5, 0, 5, 4,
                               2, 6, 7, 2, 7, 3, 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6};
   w.set_hull(std::move(v), std::move(t), Vec3(0, 0.2, 0), Vec3::Zero());  // beside the bed: it touches nothing
-  for (int s = 0; s < 2000; ++s) w.step();
+  w.begin_cull_at_step(settle_steps);
   BedRun r;
+  std::vector<Vec3> at_cull_start = bed.x;
+  for (long s = 0; s < settle_steps; ++s) {
+    w.step();
+    std::size_t culled = 0;
+    for (std::size_t i = 0; i < w.size(); ++i) culled += w.culled(i);
+    r.culled_while_settling = std::max(r.culled_while_settling, culled);
+  }
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    at_cull_start[i] = w.position(i);
+    r.max_settle_shift_m = std::max(r.max_settle_shift_m, (at_cull_start[i] - bed.x[i]).norm());
+    r.ahead_at_cull_start += at_cull_start[i].x() > kAhead + kR;  // wholly beyond the window
+  }
+  for (int s = 0; s < 2000; ++s) w.step();
   r.woken = w.stats().woken;
   for (std::size_t i = 0; i < w.size(); ++i)
     if (w.culled(i)) {
       ++r.culled_end;
-      r.max_culled_shift_m = std::max(r.max_culled_shift_m, (w.position(i) - bed.x[i]).norm());
+      r.max_culled_shift_m = std::max(r.max_culled_shift_m, (w.position(i) - at_cull_start[i]).norm());
     }
-  std::printf("[loaded bed, wake by %s] woken %ld, culled at the end %zu of %zu, largest shift of a culled one %.3g m\n",
-              std::string(brash::to_string(by)).c_str(), r.woken, r.culled_end, w.size(), r.max_culled_shift_m);
+  std::printf("[loaded bed, wake by %s, settled %ld steps first] woken %ld, culled at the end %zu of %zu, largest "
+              "shift of a culled one %.3g m (while settling: %.3g m, culled %zu)\n",
+              std::string(brash::to_string(by)).c_str(), settle_steps, r.woken, r.culled_end, w.size(),
+              r.max_culled_shift_m, r.max_settle_shift_m, r.culled_while_settling);
   return r;
+}
+
+// The row as placed, floating 0.5 mm apart, its last sphere at the end wall: the current has yet to close the gaps
+Bed unsettled_bed() {
+  Bed b;
+  const double z = kR - brash::core::analytic::height_for_fraction(kR, 0.9);
+  for (int i = 0; i < kBed; ++i) b.x.emplace_back(kBedX0 + 2 * kR * (kBed - 1) - (2 * kR + 5e-4) * (kBed - 1 - i), 0, z);
+  return b;
 }
 }  // namespace
 
@@ -235,4 +262,49 @@ TEST(OdeFarField, PushFrontLeavesALoadedBedAtRestCulled) {
   EXPECT_EQ(by_front.woken, 0);
   EXPECT_EQ(by_front.culled_end, static_cast<std::size_t>(outside));
   EXPECT_EQ(by_front.max_culled_shift_m, 0.0);
+}
+
+// A far field that begins after a settling (brash-ode --settle) integrates the whole bed until then: the row as
+// placed drifts with the current against the end wall and comes to rest there, every sphere stepped; then the cull
+// takes the resting ice out where it lies, and the push front wakes none of it.
+TEST(OdeFarField, SettlingBeforeTheCullIntegratesTheWholeBed) {
+  const Bed placed = unsettled_bed();
+  constexpr long kSettle = 4000;  // 2 s at dt 5e-4 s
+  const BedRun settled_first = run_bed(placed, brash::WakeBy::PushFront, kSettle);
+  EXPECT_EQ(settled_first.culled_while_settling, 0u);
+  EXPECT_GT(settled_first.max_settle_shift_m, 0.007) << "the row closes its 15 gaps of 0.5 mm while settling";
+  EXPECT_GE(settled_first.culled_end, settled_first.ahead_at_cull_start);
+  EXPECT_GE(settled_first.ahead_at_cull_start, static_cast<std::size_t>(kBed - 3));
+  EXPECT_EQ(settled_first.woken, 0);
+  EXPECT_EQ(settled_first.max_culled_shift_m, 0.0);
+}
+
+namespace {
+// Three floating spheres ahead of the box hull at rest, beyond its window (0.035 m): one at rest at x = 0.2 m and,
+// further ahead, one moving at `ahead_m_s` along x and one heaving at 0.02 m/s. Returns whether the resting one is
+// culled after 0.1 s (membership every 20 steps).
+bool resting_sphere_culled(double ahead_m_s) {
+  static OdeLibrary lib;
+  Skips k;
+  k.cull = true;
+  k.cull_ahead_m = 0.035;
+  k.wake_by = brash::WakeBy::PushFront, k.wake_force_N = 1e-4, k.wake_speed_m_s = 0.001, k.front_speed_m_s = 0.005;
+  World w(brash::core::FluidParams{}, StepperSettings{}, Frictions{}, k);
+  const double z = kR - brash::core::analytic::height_for_fraction(kR, 0.9);
+  w.add_sphere(Vec3(0.2, 0, z), kR, 900);
+  w.add_sphere(Vec3(0.3, 0.1, z), kR, 900, Vec3(ahead_m_s, 0, 0));
+  w.add_sphere(Vec3(0.3, -0.1, z), kR, 900, Vec3(0, 0, 0.02));
+  add_box_hull(w);
+  w.set_hull_velocity(Vec3::Zero());
+  for (int s = 0; s < 200; ++s) w.step();
+  return w.culled(0);
+}
+}  // namespace
+
+// The push front follows the ice pushed ahead, along the ship's course: a piece moving forward faster than the front
+// speed takes the front past the resting one (which then is active), one moving back out of the channel (as the
+// bed spreads from an open end) or heaving does not.
+TEST(OdeFarField, PushFrontFollowsOnlyIceMovingAhead) {
+  EXPECT_TRUE(resting_sphere_culled(-0.02)) << "ice moving back or heaving leaves the front where it is";
+  EXPECT_FALSE(resting_sphere_culled(0.02)) << "ice moving ahead takes the front with it";
 }

@@ -161,7 +161,8 @@ struct SpeedupSpec {
                                         // push_front (brash-ode: ahead of the bow the window's front follows the
                                         // push; beside the hull and behind the stern by force)
   double farfield_front_speed_m_s = 0.005;  // push_front: the front lies farfield_ahead_m ahead of the foremost
-                                        // active piece faster than this (docs/ode.md, "The far field on ODE")
+                                        // active piece moving ahead (along x) faster than this (docs/ode.md, "The
+                                        // far field on ODE")
   bool moving_window = false;           // only the ice around the hull in the scene: the bed ahead held out until
                                         // the front reaches it, the ice far behind the stern removed
   double moving_window_ahead_m = 1.0;   // the front: this far ahead of the bow and of the foremost moving piece

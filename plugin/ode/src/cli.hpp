@@ -69,7 +69,13 @@ inline void add_run_options(CLI::App& app, RunOptions& o, std::string& implicit_
   app.add_flag("!--cull-keep-geoms", o.skips.cull_geoms,
                "cull: keep every frozen sphere in collision detection (slower, same contacts; for checking)");
   app.add_flag("--end-walls", o.end_walls, "the case with channel.ends: walls (walls at x = 0 and x = length)");
-  app.add_option("--settle", o.settle_s, "settle the bed this long [s] with the hull parked before t = 0")
+  app.add_option("--settle", o.settle_s, "settle the whole bed this long [s] before t = 0, the hull parked and every piece "
+                 "integrated (a far field begins after it)")
+      ->capture_default_str();
+  app.add_option("--settle-damping", o.settle_damping,
+                 "velocity damping per step over the settling's first half (ODE's body damping; its second half "
+                 "is free), to bring the bed to rest on ODE's own contacts")
+      ->check(CLI::Range(0.0, 0.5))
       ->capture_default_str();
   app.add_flag("!--no-progress", o.progress, "no progress line on stderr");
   app.add_option("--restart-every", o.restart_every_s, "simulated time between restart files in RUN_DIR/restart [s] (0 = none)")

@@ -179,6 +179,7 @@ class Stepping {
   void build_world();
   void log_scene();
   void start_moving(bool resume);
+  std::string settle_progress(long steps) const;
   void restore(run::Attempt& a);
   void save_restart(long step);
   void dump(long step);
@@ -270,7 +271,7 @@ void Stepping::log_scene() {
                     !wake.enabled()                       ? std::string("the window alone (no wake rule)")
                     : wake.by == WakeBy::NeighbourSpeed ? fmt::format("woken by a neighbour faster than {} m/s", wake.speed_m_s)
                     : wake.by == WakeBy::PushFront
-                        ? fmt::format("the front {} m ahead of the foremost piece faster than {} m/s; beside and "
+                        ? fmt::format("the front {} m ahead of the foremost piece moving ahead faster than {} m/s; beside and "
                                       "behind woken by a horizontal force above {:.4g} N",
                                       k.cull_ahead_m, wake.front_speed_m_s, wake.force_N)
                         : fmt::format("woken by a horizontal force above {:.4g} N", wake.force_N)));
@@ -295,12 +296,19 @@ void Stepping::log_scene() {
                                                              : "off (hull not closed)")));
 }
 
-// Optional settling with the hull parked (on resume the restart file holds the state after it), then the hull
-// moves, with its flow.
+// Optional settling of the whole bed with the hull parked and every piece integrated (the far field begins after
+// it; on resume the restart file holds the state after it), then the hull moves, with its flow.
 void Stepping::start_moving(bool resume) {
-  const long settle_steps = resume ? 0 : std::lround(o_.settle_s / dt_);
-  for (long k = 0; k < settle_steps; ++k) w_->step();
-  if (settle_steps) log(fmt::format("settled {} s ({} steps)", o_.settle_s, settle_steps));
+  const long settle_steps = std::lround(o_.settle_s / dt_);
+  w_->begin_cull_at_step(settle_steps);
+  const long report_every = std::max(1L, std::lround(0.05 / dt_));
+  const long damped_steps = o_.settle_damping > 0 ? settle_steps / 2 : 0;
+  if (!resume && damped_steps) w_->set_damping(o_.settle_damping, o_.settle_damping);
+  for (long k = 0; !resume && k < settle_steps; ++k) {
+    if (k == damped_steps && damped_steps) w_->set_damping(0, o_.stepper.angular_damping);
+    w_->step();
+    if ((k + 1) % report_every == 0 || k + 1 == settle_steps) log(settle_progress(k + 1));
+  }
   w_->set_hull_velocity(Vec3(c_.ship.speed_m_s, 0, 0));
   if (!s_.hull_flow.empty()) {
     log(fmt::format("hull flow {}: {} table nodes, largest flow speed {:.4g} m/s (ship {} m/s)",
@@ -311,6 +319,24 @@ void Stepping::start_moving(bool resume) {
   }
   ps_settle_ = w_->stats().particle_steps;
   stats0_ = w_->stats();
+}
+
+// How far the settling has come: the pieces the far field would still find moving (faster than its idle speed,
+// speedups.farfield_wake_speed_m_s) and the rms speed.
+std::string Stepping::settle_progress(long steps) const {
+  const double idle_m_s = c_.speedups.farfield_wake_speed_m_s;
+  std::size_t moving = 0;
+  double sum_v2 = 0, max_v = 0;
+  for (std::size_t i = 0; i < w_->size(); ++i) {
+    const double v = w_->velocity(i).norm();
+    moving += v > idle_m_s;
+    sum_v2 += v * v;
+    max_v = std::max(max_v, v);
+  }
+  return fmt::format("settling {:.3f} of {} s ({} steps): {} of {} pieces faster than {} m/s, rms speed {:.3g} m/s, "
+                     "largest {:.3g} m/s",
+                     double(steps) * dt_, o_.settle_s, steps, moving, w_->size(), idle_m_s,
+                     std::sqrt(sum_v2 / double(std::max<std::size_t>(1, w_->size()))), max_v);
 }
 
 // The newest intact restart file: the world and the loop state; the outputs keep only what was written up to it.

@@ -56,6 +56,7 @@ nlohmann::json options_json(const RunOptions& o) {
           {"implicit", o.implicit_mode == ImplicitMode::EffectiveMass ? "effective_mass" : "scale_forces"},
           {"end_walls", o.end_walls},
           {"settle_s", o.settle_s},
+          {"settle_damping", o.settle_damping},
           {"overlap_tolerance_over_d", o.overlap_tolerance_over_d},
           {"restart_every_s", o.restart_every_s},
           {"scene_from", o.scene_from.empty() ? std::string() : fs::absolute(o.scene_from).lexically_normal().string()},
@@ -178,6 +179,7 @@ RunOptions options_from_meta(const fs::path& run_dir, const RunOptions& cli) {
     o.implicit_mode = j.at("implicit") == "scale_forces" ? ImplicitMode::ScaleForces : ImplicitMode::EffectiveMass;
     o.end_walls = j.at("end_walls");
     o.settle_s = j.at("settle_s");
+    o.settle_damping = j.value("settle_damping", 0.0);  // runs before the option: undamped
     o.overlap_tolerance_over_d = j.at("overlap_tolerance_over_d");
     o.restart_every_s = j.at("restart_every_s");
     o.scene_from = j.value("scene_from", std::string());  // runs before the option: from their packing

@@ -192,7 +192,7 @@ core::FarFieldWindow World::cull_window() const {
 }
 
 core::WakeRule World::wake_rule() const {
-  return skips_.cull ? skips_.wake_rule() : core::WakeRule{};
+  return culling() ? skips_.wake_rule() : core::WakeRule{};
 }
 
 void World::freeze(SphereRec& s) {
@@ -211,27 +211,28 @@ void World::thaw(SphereRec& s) {
 // Membership (core::idle_after_update) every cull_every steps; with --auto-disable and far_only, the far
 // spheres' auto-disable flags.
 void World::update_cull() {
-  if (!hull_body_ || (!skips_.cull && !(skips_.auto_disable && skips_.auto_disable_far_only))) return;
+  const bool cull = culling();
+  if (!hull_body_ || (!cull && !(skips_.auto_disable && skips_.auto_disable_far_only))) return;
   const core::WakeRule rule = wake_rule();
   if (rule.front_follows_push()) {
-    double foremost = -std::numeric_limits<double>::infinity();  // the foremost active piece faster than U
-    const double u2 = rule.front_speed_m_s * rule.front_speed_m_s;
+    // the foremost active piece moving ahead (+x, the ship's course) faster than U: the push; not the ice that
+    // heaves or spreads out of an open channel end on its own
+    double foremost = -std::numeric_limits<double>::infinity();
     for (const auto& s : spheres_) {
       if (s.culled || s.retired) continue;
-      const dReal* v = dBodyGetLinearVel(s.body);
-      if (v[0] * v[0] + v[1] * v[1] + v[2] * v[2] > u2) foremost = std::max(foremost, dBodyGetPosition(s.body)[0]);
+      if (dBodyGetLinearVel(s.body)[0] > rule.front_speed_m_s) foremost = std::max(foremost, dBodyGetPosition(s.body)[0]);
     }
     push_front_x_m_ =
         core::push_front_x(hull_position().x() + hull_max_[0], foremost, push_front_x_m_, skips_.cull_ahead_m);
   }
   const core::FarFieldWindow window = cull_window();
-  const bool first_update = stats_.steps == 0;
+  const bool first_update = stats_.steps == cull_first_step_;
   for (auto& s : spheres_) {
     if (s.retired) continue;
     const dReal* p = dBodyGetPosition(s.body);
     const core::FarFieldZone zone = core::far_field_zone(window, p[0], p[1]);
     const bool far = zone != core::FarFieldZone::Inside;
-    if (skips_.cull) {
+    if (cull) {
       const dReal* v = dBodyGetLinearVel(s.body);
       const bool idle = core::idle_after_update(rule, zone, s.culled, first_update, Vec3(v[0], v[1], v[2]));
       if (idle && !s.culled) freeze(s);
@@ -242,7 +243,7 @@ void World::update_cull() {
       if (!far && !s.culled && !dBodyIsEnabled(s.body)) dBodyEnable(s.body);
     }
   }
-  if (skips_.cull) update_cull_geoms(window);
+  if (cull) update_cull_geoms(window);
 }
 
 // Culled spheres far from every active one leave collision detection (Skips::cull_geoms). Active: the window,
@@ -572,7 +573,7 @@ void World::create_joints() {
 
 void World::step() {
   using clock = std::chrono::steady_clock;
-  if (stats_.steps % std::max(1, skips_.cull_every) == 0) update_cull();
+  if ((stats_.steps - cull_first_step_) % std::max(1, skips_.cull_every) == 0) update_cull();
   else if (cull_geoms_stale_) update_cull_geoms(cull_window());
   auto t0 = clock::now();
   apply_fluid();

@@ -38,6 +38,7 @@ struct RunOptions {
   SphereOrder sphere_order = SphereOrder::Spatial;
   bool end_walls = false;              // --end-walls: the case with channel.ends: walls
   double settle_s = 0;                 // simulated settling with the hull parked at start_x (not in t)
+  double settle_damping = 0;           // ODE velocity damping per step over the settling's first half
   bool progress = true;                // the engine's own lines on stderr (the driver prints progress)
   double overlap_tolerance_over_d = 1e-4;  // packing overlaps beyond this fraction of d_mean are errors
   double restart_every_s = 0.1;        // simulated time between restart files (0 = none)

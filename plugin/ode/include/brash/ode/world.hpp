@@ -96,7 +96,7 @@ struct Skips {
   // wake_force_N (read from the joints' feedback after the step), or (wake_by NeighbourSpeed) when an active
   // sphere in contact with it moved faster than wake_speed_m_s into the step (before it: the hard contact with a
   // culled sphere stops it within the step); with wake_by PushFront nothing wakes ahead of the bow: the window's
-  // front follows the spheres faster than front_speed_m_s (core::push_front_x); at an update a sphere ahead of the bow keeps
+  // front follows the spheres moving ahead (+x) faster than front_speed_m_s (core::push_front_x); at an update a sphere ahead of the bow keeps
   // its state, one behind the stern, beside the hull or at the first update is culled once no faster than
   // wake_speed_m_s. wake_force_N = 0: the window alone (the culled ice is an immovable wall that jams the
   // pushed bed, docs/performance.md). brash-ode sets both from the case's speedups.farfield_wake_*.
@@ -189,6 +189,12 @@ class World {
   void set_hull_flow(core::FlowTable table);
   bool has_hull_flow() const { return !hull_flow_.empty(); }
 
+  // The far field (Skips::cull) from this step on: the steps before it integrate every sphere (brash-ode --settle
+  // settles the whole bed, so that the ice the far field leaves idle lies as ODE's own contacts hold it); its
+  // first membership update is at this step. Not in restart files: a resumed run sets it again.
+  void begin_cull_at_step(long step) { cull_first_step_ = step; }
+  bool culling() const { return skips_.cull && stats_.steps >= cull_first_step_; }
+
   void set_hull_velocity(const Vec3& v);
   bool has_hull() const { return hull_body_ != nullptr; }
   Vec3 hull_position() const;
@@ -260,6 +266,7 @@ class World {
   bool cull_geoms_stale_ = false;
   // Wake by push front: the window's front (core::push_front_x; -infinity before the first update; in restarts)
   double push_front_x_m_ = -std::numeric_limits<double>::infinity();
+  long cull_first_step_ = 0;  // begin_cull_at_step
   std::vector<dContact> contact_buf_;
   // Contacts of one step, created as joints in a fixed order (sphere index, partner) after the collision
   // pass, so the joint order does not depend on the broad phase's internal order (needed for exact restarts).
