@@ -76,6 +76,19 @@ TEST(FarFieldMembership, AheadKeepsItsStateAfterTheFirstUpdate) {
   EXPECT_FALSE(idle_after_update(kWake, FarFieldZone::Ahead, true, true, kFast));
 }
 
+// By push front the bed ahead of the window is held out from the first update on, moving or not (as the moving
+// window holds it); afterwards, as by force, a piece ahead keeps its state; behind and beside, by speed.
+TEST(FarFieldMembership, ByPushFrontTheBedAheadIsIdleFromTheFirstUpdate) {
+  const WakeRule rule{0.02, 0.005, brash::WakeBy::PushFront, 0.005};
+  EXPECT_TRUE(idle_after_update(rule, FarFieldZone::Ahead, false, true, kFast));
+  EXPECT_TRUE(idle_after_update(rule, FarFieldZone::Ahead, false, true, kSlow));
+  EXPECT_FALSE(idle_after_update(rule, FarFieldZone::Ahead, false, false, kRest));
+  EXPECT_TRUE(idle_after_update(rule, FarFieldZone::Ahead, true, false, kFast));
+  EXPECT_FALSE(idle_after_update(rule, FarFieldZone::Beside, false, true, kFast));
+  EXPECT_FALSE(idle_after_update(rule, FarFieldZone::Behind, false, true, kFast));
+  EXPECT_FALSE(idle_after_update(rule, FarFieldZone::Inside, true, true, kRest));
+}
+
 TEST(FarFieldMembership, BehindAndBesideIdleOnceSlow) {
   for (auto zone : {FarFieldZone::Behind, FarFieldZone::Beside})
     for (bool was_idle : {false, true}) {

@@ -129,9 +129,11 @@ TEST(OdeFarField, PushFrontTakesThePushedChainIntoTheWindow) {
   EXPECT_FALSE(e.culled[i]) << "sphere " << i;
   }
   EXPECT_EQ(e.woken, 0);
-  EXPECT_FALSE(e.culled[kChain + 1]) << "a lone moving sphere stays active";
-  // the lone moving sphere (x 0.4 -> 0.41) is the foremost moving one: the front follows it, past the one at rest
-  EXPECT_FALSE(e.culled[kChain]);
+  // the bed ahead is held out from the start, moving or not: the lone moving sphere too (it stays at x = 0.4 m;
+  // the front, 0.035 m ahead of the pushed chain, does not reach it)
+  EXPECT_TRUE(e.culled[kChain + 1]) << "a lone moving sphere far ahead is held out";
+  EXPECT_EQ(e.x[kChain + 1].x(), 0.4);
+  EXPECT_TRUE(e.culled[kChain]);
   EXPECT_EQ(e.x[kChain].x(), 0.4);
   EXPECT_LT(e.mean_fx_N / wall.mean_fx_N, 0.01);
 }
@@ -280,10 +282,10 @@ TEST(OdeFarField, SettlingBeforeTheCullIntegratesTheWholeBed) {
 }
 
 namespace {
-// Three floating spheres ahead of the box hull at rest, beyond its window (0.035 m): one at rest at x = 0.2 m and,
-// further ahead, one moving at `ahead_m_s` along x and one heaving at 0.02 m/s. Returns whether the resting one is
-// culled after 0.1 s (membership every 20 steps).
-bool resting_sphere_culled(double ahead_m_s) {
+// Floating spheres ahead of the box hull at rest (its window: 0.035 m): one at rest at x = 0.06 m, beyond the
+// window; one at (mover_x_m, 0.1 m) moving at mover_m_s along x; one heaving at 0.02 m/s at (0.03 m, -0.1 m), in
+// the window. Returns whether the resting one is culled after 0.1 s (membership every 20 steps).
+bool resting_sphere_culled(double mover_x_m, double mover_m_s) {
   static OdeLibrary lib;
   Skips k;
   k.cull = true;
@@ -291,9 +293,9 @@ bool resting_sphere_culled(double ahead_m_s) {
   k.wake_by = brash::WakeBy::PushFront, k.wake_force_N = 1e-4, k.wake_speed_m_s = 0.001, k.front_speed_m_s = 0.005;
   World w(brash::core::FluidParams{}, StepperSettings{}, Frictions{}, k);
   const double z = kR - brash::core::analytic::height_for_fraction(kR, 0.9);
-  w.add_sphere(Vec3(0.2, 0, z), kR, 900);
-  w.add_sphere(Vec3(0.3, 0.1, z), kR, 900, Vec3(ahead_m_s, 0, 0));
-  w.add_sphere(Vec3(0.3, -0.1, z), kR, 900, Vec3(0, 0, 0.02));
+  w.add_sphere(Vec3(0.06, 0, z), kR, 900);
+  w.add_sphere(Vec3(mover_x_m, 0.1, z), kR, 900, Vec3(mover_m_s, 0, 0));
+  w.add_sphere(Vec3(0.03, -0.1, z), kR, 900, Vec3(0, 0, 0.02));
   add_box_hull(w);
   w.set_hull_velocity(Vec3::Zero());
   for (int s = 0; s < 200; ++s) w.step();
@@ -301,10 +303,12 @@ bool resting_sphere_culled(double ahead_m_s) {
 }
 }  // namespace
 
-// The push front follows the ice pushed ahead, along the ship's course: a piece moving forward faster than the front
-// speed takes the front past the resting one (which then is active), one moving back out of the channel (as the
-// bed spreads from an open end) or heaving does not.
+// The push front follows the ice pushed ahead, along the ship's course: a piece in the window moving forward faster
+// than the front speed takes the front past the resting one (which then is active); one moving back out of the
+// channel (as the bed spreads from an open end) or heaving does not, nor does one moving ahead far beyond the window
+// at the start (held out, as the moving window holds the bed ahead: ice spreading out of the far open end).
 TEST(OdeFarField, PushFrontFollowsOnlyIceMovingAhead) {
-  EXPECT_TRUE(resting_sphere_culled(-0.02)) << "ice moving back or heaving leaves the front where it is";
-  EXPECT_FALSE(resting_sphere_culled(0.02)) << "ice moving ahead takes the front with it";
+  EXPECT_FALSE(resting_sphere_culled(0.03, 0.02)) << "ice in the window moving ahead takes the front with it";
+  EXPECT_TRUE(resting_sphere_culled(0.03, -0.02)) << "ice moving back or heaving leaves the front where it is";
+  EXPECT_TRUE(resting_sphere_culled(0.5, 0.02)) << "ice moving ahead far beyond the window at the start is held out";
 }

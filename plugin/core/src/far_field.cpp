@@ -39,7 +39,12 @@ bool idle_after_update(const WakeRule& rule, FarFieldZone zone, bool was_idle, b
                        const Vec3& v) {
   if (zone == FarFieldZone::Inside) return false;
   if (!rule.enabled()) return true;
-  if (zone == FarFieldZone::Ahead && !first_update) return was_idle;
+  if (zone == FarFieldZone::Ahead) {
+    // by push front the bed ahead is held out from the start, moving or not, as the moving window holds it: ice
+    // that spreads out of an open channel end far ahead does not take the front there
+    if (first_update && rule.front_follows_push()) return true;
+    if (!first_update) return was_idle;
+  }
   return v.x() * v.x() + v.y() * v.y() + v.z() * v.z() <= rule.speed_m_s * rule.speed_m_s;
 }
 

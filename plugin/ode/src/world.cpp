@@ -214,11 +214,14 @@ void World::update_cull() {
   const bool cull = culling();
   if (!hull_body_ || (!cull && !(skips_.auto_disable && skips_.auto_disable_far_only))) return;
   const core::WakeRule rule = wake_rule();
+  const bool first_update = stats_.steps == cull_first_step_;
   if (rule.front_follows_push()) {
     // the foremost active piece moving ahead (+x, the ship's course) faster than U: the push; not the ice that
-    // heaves or spreads out of an open channel end on its own
+    // heaves or spreads out of an open channel end on its own. At the first update the front starts at the bow
+    // (the bed ahead is held out then, moving or not: core::idle_after_update).
     double foremost = -std::numeric_limits<double>::infinity();
     for (const auto& s : spheres_) {
+      if (first_update) break;
       if (s.culled || s.retired) continue;
       if (dBodyGetLinearVel(s.body)[0] > rule.front_speed_m_s) foremost = std::max(foremost, dBodyGetPosition(s.body)[0]);
     }
@@ -226,7 +229,6 @@ void World::update_cull() {
         core::push_front_x(hull_position().x() + hull_max_[0], foremost, push_front_x_m_, skips_.cull_ahead_m);
   }
   const core::FarFieldWindow window = cull_window();
-  const bool first_update = stats_.steps == cull_first_step_;
   for (auto& s : spheres_) {
     if (s.retired) continue;
     const dReal* p = dBodyGetPosition(s.body);

@@ -75,7 +75,7 @@ double wake_force_N(double weight_fraction, double mean_diameter_m, double ice_d
 bool wakes(const WakeRule& rule, double fx_N, double fy_N, FarFieldZone zone = FarFieldZone::Beside);
 
 // The window's front with the push front (WakeBy::PushFront): `ahead` beyond the bow and beyond the foremost active
-// piece faster than the front speed (-infinity: none), never behind the previous front.
+// piece moving ahead faster than the front speed (-infinity: none), never behind the previous front.
 double push_front_x(double bow_x_m, double foremost_moving_x_m, double previous_front_x_m, double ahead_m);
 
 // Does an idle piece touching a piece with this velocity wake now? (by neighbour speed: |v| > V; never
@@ -89,7 +89,9 @@ constexpr bool touching(double dx_m, double dy_m, double dz_m, double r1_m, doub
 }
 
 // Membership at an update: is the piece idle afterwards? `first_update`: the run's first (fix brash/farfield
-// also counts a resumed run's first; brash-ode restores the idle set exactly from its restart file).
+// also counts a resumed run's first; brash-ode restores the idle set exactly from its restart file). Ahead of the
+// window a piece keeps its state, except at the first update, where it is idle when no faster than the wake speed,
+// or by push front always.
 bool idle_after_update(const WakeRule& rule, FarFieldZone zone, bool was_idle, bool first_update,
                        const Vec3& velocity_m_s);
 
