@@ -223,14 +223,21 @@ TEST_F(Restart, CullGeomsGiveTheSameRunAndResume) {
 
 // The far field woken by the push front keeps its front in the restart file: a run killed after step 230 and
 // resumed ends as the uninterrupted one (to the dumps' printed digits, as above).
-TEST_F(Restart, PushFrontResumesWithItsFront) {
+// The smoke case with the push front's far field
+fs::path push_front_case() {
   const fs::path case_dir = kRoot / "push_front_case";
+  if (fs::exists(case_dir / "case.yaml")) return case_dir;
   fs::create_directories(case_dir);
   for (const char* f : {"case.yaml", "packing.csv", "packing.json"})
     fs::copy_file(fs::path(BRASH_SMOKE_CASE) / f, case_dir / f, fs::copy_options::overwrite_existing);
   std::ofstream(case_dir / "case.yaml", std::ios::app)
       << "speedups:\n  farfield: true\n  farfield_ahead_m: 0.08\n  farfield_behind_m: 0.02\n"
          "  farfield_beside_m: 0.0\n  farfield_wake_by: push_front\n  farfield_front_speed_m_s: 0.05\n";
+  return case_dir;
+}
+
+TEST_F(Restart, PushFrontResumesWithItsFront) {
+  const fs::path case_dir = push_front_case();
   const auto cmd = [&](const fs::path& out) {
     return std::string("'") + BRASH_ODE_EXE + "' '" + case_dir.string() + "' --out '" + out.string() +
            "' --duration 0.2 --restart-every 0.04 --no-progress --no-post";
@@ -245,6 +252,32 @@ TEST_F(Restart, PushFrontResumesWithItsFront) {
   EXPECT_LE(max_diff(p / "hull_force.csv", q / "hull_force.csv", 1, 4), 1e-6);
   EXPECT_LE(max_diff(p / "particles" / "particles_400.csv", q / "particles" / "particles_400.csv", 1, 4), 1e-9);
   EXPECT_LE(max_diff(p / "particles" / "particles_400.csv", q / "particles" / "particles_400.csv", 5, 8), 1e-6);
+}
+
+// With --settle the whole bed is integrated first and the far field's membership updates count from its end
+// (World::begin_cull_at_step): a resumed run skips the settling (the restart file holds the state after it) and
+// keeps that schedule, so it ends as the uninterrupted run does.
+TEST_F(Restart, SettlingThenPushFrontResumesOnItsSchedule) {
+  const fs::path case_dir = push_front_case();
+  const auto cmd = [&](const fs::path& out) {
+    return std::string("'") + BRASH_ODE_EXE + "' '" + case_dir.string() + "' --out '" + out.string() +
+           "' --duration 0.2 --restart-every 0.04 --settle 0.025 --settle-damping 0.02 --no-progress --no-post";
+  };
+  const fs::path r = kRoot / "R", s = kRoot / "S";
+  ASSERT_EQ(run(cmd(r) + " > /dev/null"), 0);
+  const std::string log = slurp(r / "log.txt");
+  EXPECT_NE(log.find("settling 0.025 of 0.025 s (50 steps)"), std::string::npos) << log;
+  const fs::path p = kRoot / "P2";
+  ASSERT_EQ(run(std::string("'") + BRASH_ODE_EXE + "' '" + case_dir.string() + "' --out '" + p.string() +
+                "' --duration 0.2 --restart-every 0 --no-progress --no-post > /dev/null"),
+            0);
+  EXPECT_NE(slurp(r / "hull_force.csv"), slurp(p / "hull_force.csv"));  // the settling did act
+  ASSERT_EQ(run(cmd(s) + " --crash-after-step 230"), 137);
+  ASSERT_EQ(run(resume_cmd(s)), 0);
+  EXPECT_EQ(slurp(s / "log.txt").find("settling 0.050"), std::string::npos) << "the resumed run settles again";
+  EXPECT_LE(max_diff(r / "hull_force.csv", s / "hull_force.csv", 1, 4), 1e-6);
+  EXPECT_LE(max_diff(r / "particles" / "particles_400.csv", s / "particles" / "particles_400.csv", 1, 4), 1e-9);
+  EXPECT_LE(max_diff(r / "particles" / "particles_400.csv", s / "particles" / "particles_400.csv", 5, 8), 1e-6);
 }
 
 // The grid broad phase (default) and ODE's sweep and prune hand the same pairs to the narrow phase and the joints
