@@ -249,6 +249,10 @@ TEST_F(Restart, PushFrontResumesWithItsFront) {
   EXPECT_NE(slurp(p / "hull_force.csv"), slurp(kRoot / "A" / "hull_force.csv"));  // the far field did act
   ASSERT_EQ(run(cmd(q) + " --crash-after-step 230"), 137);
   ASSERT_EQ(run(resume_cmd(q)), 0);
+  // the wake counts carry over the resume (restart format 5)
+  const auto woken = nlohmann::json::parse(slurp(p / "meta.json"))["cull_woken"];
+  EXPECT_GT(woken.value("all", 0L), 0) << woken.dump();
+  EXPECT_EQ(nlohmann::json::parse(slurp(q / "meta.json"))["cull_woken"], woken);
   EXPECT_LE(max_diff(p / "hull_force.csv", q / "hull_force.csv", 1, 4), 1e-6);
   EXPECT_LE(max_diff(p / "particles" / "particles_400.csv", q / "particles" / "particles_400.csv", 1, 4), 1e-9);
   EXPECT_LE(max_diff(p / "particles" / "particles_400.csv", q / "particles" / "particles_400.csv", 5, 8), 1e-6);

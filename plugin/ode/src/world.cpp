@@ -621,6 +621,8 @@ void World::save_state(restart::Writer& w) const {
   w.put<double>(stats_.wall_collide_s);
   w.put<double>(stats_.wall_step_s);
   w.put<double>(push_front_x_m_);
+  w.put<long>(stats_.woken);
+  w.put<long>(stats_.woken_by_speed);
   if (hull_body_) {
     const dReal* p = dBodyGetPosition(hull_body_);
     const dReal* v = dBodyGetLinearVel(hull_body_);
@@ -671,6 +673,8 @@ void World::load_state(restart::Reader& r) {
   stats_.wall_collide_s = r.get<double>();
   stats_.wall_step_s = r.get<double>();
   push_front_x_m_ = r.get<double>();
+  stats_.woken = r.get<long>();
+  stats_.woken_by_speed = r.get<long>();
   stats_.t_s = static_cast<double>(stats_.steps) * stepper_.dt_s;
   if (hull_body_) {
     const Vec3 p = r.get_vec3(), v = r.get_vec3();
