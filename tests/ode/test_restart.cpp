@@ -79,6 +79,33 @@ double max_diff(const fs::path& a, const fs::path& b, std::size_t c0, std::size_
   return m;
 }
 
+// A resumed run against the uninterrupted one: the same hull force rows and final particle state, to the
+// dumps' printed digits (%.9g, %.6g: 1e-12 m, 1e-7 m/s).
+void expect_resumed_matches(const fs::path& uninterrupted, const fs::path& resumed) {
+  const fs::path last = fs::path("particles") / "particles_400.csv";
+  EXPECT_LE(max_diff(uninterrupted / "hull_force.csv", resumed / "hull_force.csv", 1, 4), 1e-6);
+  EXPECT_LE(max_diff(uninterrupted / last, resumed / last, 1, 4), 1e-9);
+  EXPECT_LE(max_diff(uninterrupted / last, resumed / last, 5, 8), 1e-6);
+}
+
+// The smoke case with the push front's far field, and the command that runs it with `extra` options
+fs::path push_front_case() {
+  const fs::path case_dir = kRoot / "push_front_case";
+  if (fs::exists(case_dir / "case.yaml")) return case_dir;
+  fs::create_directories(case_dir);
+  for (const char* f : {"case.yaml", "packing.csv", "packing.json"})
+    fs::copy_file(fs::path(BRASH_SMOKE_CASE) / f, case_dir / f, fs::copy_options::overwrite_existing);
+  std::ofstream(case_dir / "case.yaml", std::ios::app)
+      << "speedups:\n  farfield: true\n  farfield_ahead_m: 0.08\n  farfield_behind_m: 0.02\n"
+         "  farfield_beside_m: 0.0\n  farfield_wake_by: push_front\n  farfield_front_speed_m_s: 0.05\n";
+  return case_dir;
+}
+
+std::string push_front_cmd(const fs::path& out, const std::string& extra = "") {
+  return std::string("'") + BRASH_ODE_EXE + "' '" + push_front_case().string() + "' --out '" + out.string() +
+         "' --duration 0.2 --restart-every 0.04 --no-progress --no-post" + extra;
+}
+
 class Restart : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -216,72 +243,44 @@ TEST_F(Restart, CullGeomsGiveTheSameRunAndResume) {
   ASSERT_EQ(run(base_cmd(h) + cull + " --crash-after-step 230"), 137);
   ASSERT_EQ(run(resume_cmd(h)), 0);
   // As for the plain resume (expect_same_as_a): a resumed run matches to the dumps' printed digits.
-  EXPECT_LE(max_diff(f / "hull_force.csv", h / "hull_force.csv", 1, 4), 1e-6);
-  EXPECT_LE(max_diff(f / "particles" / "particles_400.csv", h / "particles" / "particles_400.csv", 1, 4), 1e-9);
-  EXPECT_LE(max_diff(f / "particles" / "particles_400.csv", h / "particles" / "particles_400.csv", 5, 8), 1e-6);
+  expect_resumed_matches(f, h);
 }
 
 // The far field woken by the push front keeps its front in the restart file: a run killed after step 230 and
 // resumed ends as the uninterrupted one (to the dumps' printed digits, as above).
-// The smoke case with the push front's far field
-fs::path push_front_case() {
-  const fs::path case_dir = kRoot / "push_front_case";
-  if (fs::exists(case_dir / "case.yaml")) return case_dir;
-  fs::create_directories(case_dir);
-  for (const char* f : {"case.yaml", "packing.csv", "packing.json"})
-    fs::copy_file(fs::path(BRASH_SMOKE_CASE) / f, case_dir / f, fs::copy_options::overwrite_existing);
-  std::ofstream(case_dir / "case.yaml", std::ios::app)
-      << "speedups:\n  farfield: true\n  farfield_ahead_m: 0.08\n  farfield_behind_m: 0.02\n"
-         "  farfield_beside_m: 0.0\n  farfield_wake_by: push_front\n  farfield_front_speed_m_s: 0.05\n";
-  return case_dir;
-}
-
 TEST_F(Restart, PushFrontResumesWithItsFront) {
-  const fs::path case_dir = push_front_case();
-  const auto cmd = [&](const fs::path& out) {
-    return std::string("'") + BRASH_ODE_EXE + "' '" + case_dir.string() + "' --out '" + out.string() +
-           "' --duration 0.2 --restart-every 0.04 --no-progress --no-post";
-  };
   const fs::path p = kRoot / "P", q = kRoot / "Q";
-  ASSERT_EQ(run(cmd(p) + " > /dev/null"), 0);
+  ASSERT_EQ(run(push_front_cmd(p) + " > /dev/null"), 0);
   const auto skips = nlohmann::json::parse(slurp(p / "meta.json"))["skips"];
   EXPECT_EQ(skips.value("cull_wake_by", std::string()), "push_front") << skips.dump();
   EXPECT_NE(slurp(p / "hull_force.csv"), slurp(kRoot / "A" / "hull_force.csv"));  // the far field did act
-  ASSERT_EQ(run(cmd(q) + " --crash-after-step 230"), 137);
+  ASSERT_EQ(run(push_front_cmd(q, " --crash-after-step 230")), 137);
   ASSERT_EQ(run(resume_cmd(q)), 0);
   // the wake counts carry over the resume (restart format 5)
   const auto woken = nlohmann::json::parse(slurp(p / "meta.json"))["cull_woken"];
   EXPECT_GT(woken.value("all", 0L), 0) << woken.dump();
   EXPECT_EQ(nlohmann::json::parse(slurp(q / "meta.json"))["cull_woken"], woken);
-  EXPECT_LE(max_diff(p / "hull_force.csv", q / "hull_force.csv", 1, 4), 1e-6);
-  EXPECT_LE(max_diff(p / "particles" / "particles_400.csv", q / "particles" / "particles_400.csv", 1, 4), 1e-9);
-  EXPECT_LE(max_diff(p / "particles" / "particles_400.csv", q / "particles" / "particles_400.csv", 5, 8), 1e-6);
+  expect_resumed_matches(p, q);
 }
 
 // With --settle the whole bed is integrated first and the far field's membership updates count from its end
 // (World::begin_cull_at_step): a resumed run skips the settling (the restart file holds the state after it) and
 // keeps that schedule, so it ends as the uninterrupted run does.
 TEST_F(Restart, SettlingThenPushFrontResumesOnItsSchedule) {
-  const fs::path case_dir = push_front_case();
-  const auto cmd = [&](const fs::path& out) {
-    return std::string("'") + BRASH_ODE_EXE + "' '" + case_dir.string() + "' --out '" + out.string() +
-           "' --duration 0.2 --restart-every 0.04 --settle 0.025 --settle-damping 0.02 --no-progress --no-post";
-  };
-  const fs::path r = kRoot / "R", s = kRoot / "S";
-  ASSERT_EQ(run(cmd(r) + " > /dev/null"), 0);
+  const std::string settle = " --settle 0.025 --settle-damping 0.02";
+  const std::string settled_line = "settling 0.025 of 0.025 s (50 steps)";
+  const fs::path r = kRoot / "R", s = kRoot / "S", p = kRoot / "P2";
+  ASSERT_EQ(run(push_front_cmd(r, settle) + " > /dev/null"), 0);
   const std::string log = slurp(r / "log.txt");
-  EXPECT_NE(log.find("settling 0.025 of 0.025 s (50 steps)"), std::string::npos) << log;
-  const fs::path p = kRoot / "P2";
-  ASSERT_EQ(run(std::string("'") + BRASH_ODE_EXE + "' '" + case_dir.string() + "' --out '" + p.string() +
-                "' --duration 0.2 --restart-every 0 --no-progress --no-post > /dev/null"),
-            0);
+  EXPECT_NE(log.find(settled_line), std::string::npos) << log;
+  ASSERT_EQ(run(push_front_cmd(p) + " > /dev/null"), 0);
   EXPECT_NE(slurp(r / "hull_force.csv"), slurp(p / "hull_force.csv"));  // the settling did act
-  ASSERT_EQ(run(cmd(s) + " --crash-after-step 230"), 137);
+  ASSERT_EQ(run(push_front_cmd(s, settle + " --crash-after-step 230")), 137);
   ASSERT_EQ(run(resume_cmd(s)), 0);
-  EXPECT_EQ(slurp(s / "log.txt").find("settling 0.050"), std::string::npos) << "the resumed run settles again";
-  EXPECT_LE(max_diff(r / "hull_force.csv", s / "hull_force.csv", 1, 4), 1e-6);
-  EXPECT_LE(max_diff(r / "particles" / "particles_400.csv", s / "particles" / "particles_400.csv", 1, 4), 1e-9);
-  EXPECT_LE(max_diff(r / "particles" / "particles_400.csv", s / "particles" / "particles_400.csv", 5, 8), 1e-6);
+  const std::string resumed_log = slurp(s / "log.txt");
+  EXPECT_NE(resumed_log.find(settled_line), std::string::npos) << resumed_log;
+  EXPECT_EQ(resumed_log.find(settled_line), resumed_log.rfind(settled_line)) << "the resumed run settled again";
+  expect_resumed_matches(r, s);
 }
 
 // The grid broad phase (default) and ODE's sweep and prune hand the same pairs to the narrow phase and the joints
