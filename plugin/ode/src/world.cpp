@@ -220,11 +220,10 @@ void World::update_cull() {
     // heaves or spreads out of an open channel end on its own. At the first update the front starts at the bow
     // (the bed ahead is held out then, moving or not: core::idle_after_update).
     double foremost = -std::numeric_limits<double>::infinity();
-    for (const auto& s : spheres_) {
-      if (first_update) break;
-      if (s.culled || s.retired) continue;
-      if (dBodyGetLinearVel(s.body)[0] > rule.front_speed_m_s) foremost = std::max(foremost, dBodyGetPosition(s.body)[0]);
-    }
+    if (!first_update)
+      for (const auto& s : spheres_)
+        if (!s.culled && !s.retired && dBodyGetLinearVel(s.body)[0] > rule.front_speed_m_s)
+          foremost = std::max(foremost, dBodyGetPosition(s.body)[0]);
     push_front_x_m_ =
         core::push_front_x(hull_position().x() + hull_max_[0], foremost, push_front_x_m_, skips_.cull_ahead_m);
   }

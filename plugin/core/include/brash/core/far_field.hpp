@@ -12,12 +12,14 @@
 //   - by neighbour speed (V > 0): an idle piece wakes as soon as an active piece touching it moves faster
 //     than V (a resting bed stays idle, where the force rule wakes it through its resting contacts);
 //   - by push front (brash-ode; front speed U > 0): ahead of the bow nothing wakes: the window's front lies
-//     `ahead` beyond the bow and beyond the foremost active piece faster than U, and never recedes, so the push
+//     `ahead` beyond the bow and beyond the foremost active piece moving ahead (+x) faster than U, and never
+//     recedes, and the bed ahead is idle from the first update on, moving or not, so the push
 //     meets active ice instead of a wall (on rigid contacts the pushed ice shows the push neither as its speed at
 //     the wall nor as a force apart from its resting load); beside the hull and behind the stern, by force;
 //   - at a membership update a piece inside the window is active; ahead of the bow a piece keeps its state
 //     (one the push has reached stays active: re-freezing slow pieces of a loaded bed would jam it again);
-//     behind the stern, beside the hull and at a run's first update a piece is idle once no faster than V.
+//     behind the stern, beside the hull and at a run's first update a piece is idle once no faster than V (at the
+//     first update ahead of the window, by push front, always).
 #pragma once
 #include <limits>
 
@@ -51,7 +53,8 @@ struct WakeRule {
   double speed_m_s = 0;  // where the speed decides (see above): idle once |v| <= this; by neighbour speed also:
                          // wake when a touching active piece is faster than this (0: never)
   WakeBy by = WakeBy::Force;
-  double front_speed_m_s = 0;  // by push front: the front follows the pieces faster than this (0: no rule)
+  double front_speed_m_s = 0;  // by push front: the front follows the pieces moving ahead faster than this (0: no
+                               // rule)
   bool enabled() const {
     switch (by) {
       case WakeBy::Force: return force_N > 0;

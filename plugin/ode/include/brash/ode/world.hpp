@@ -96,14 +96,14 @@ struct Skips {
   // wake_force_N (read from the joints' feedback after the step), or (wake_by NeighbourSpeed) when an active
   // sphere in contact with it moved faster than wake_speed_m_s into the step (before it: the hard contact with a
   // culled sphere stops it within the step); with wake_by PushFront nothing wakes ahead of the bow: the window's
-  // front follows the spheres moving ahead (+x) faster than front_speed_m_s (core::push_front_x); at an update a sphere ahead of the bow keeps
-  // its state, one behind the stern, beside the hull or at the first update is culled once no faster than
-  // wake_speed_m_s. wake_force_N = 0: the window alone (the culled ice is an immovable wall that jams the
+  // front follows the spheres moving ahead (+x) faster than front_speed_m_s (core::push_front_x). At an update a
+  // sphere ahead of the bow keeps its state, one behind the stern, beside the hull or at the first update is
+  // culled once no faster than wake_speed_m_s (ahead of the bow at the first update, by push front, always). wake_force_N = 0: the window alone (the culled ice is an immovable wall that jams the
   // pushed bed, docs/performance.md). brash-ode sets both from the case's speedups.farfield_wake_*.
   double wake_force_N = 0;
   double wake_speed_m_s = 0;
   WakeBy wake_by = WakeBy::Force;
-  double front_speed_m_s = 0;  // by push front: the window's front follows the pieces faster than this
+  double front_speed_m_s = 0;  // by push front: the front follows the pieces moving ahead faster than this
   core::WakeRule wake_rule() const { return {wake_force_N, wake_speed_m_s, wake_by, front_speed_m_s}; }
   // Culled spheres more than 3 largest diameters inside the frozen zone also leave collision detection
   // (dGeomDisable): they can touch only other culled spheres, which give no contact, so the contacts and the
