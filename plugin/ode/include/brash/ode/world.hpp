@@ -204,6 +204,8 @@ class World {
   double hull_min_x_body() const { return hull_min_[0]; }
   double hull_max_x_body() const { return hull_max_[0]; }
   double hull_half_beam() const { return std::max(std::abs(hull_min_[1]), std::abs(hull_max_[1])); }
+  // By push front: the window's front (x; -infinity before the first membership update).
+  double push_front_x() const { return push_front_x_m_; }
 
   const Stats& stats() const { return stats_; }
   core::WakeRule wake_rule() const;  // the cull's (none without the cull)
@@ -266,6 +268,9 @@ class World {
   bool cull_geoms_stale_ = false;
   // Wake by push front: the window's front (core::push_front_x; -infinity before the first update; in restarts)
   double push_front_x_m_ = -std::numeric_limits<double>::infinity();
+  std::vector<core::MovingPiece> moving_;  // the membership update's buffer: the ice moving ahead
+  // two moving pieces are one push when their surfaces are less than this many largest radii apart
+  static constexpr double kPushGapRadii = 0.5;
   long cull_first_step_ = 0;  // begin_cull_at_step
   std::vector<dContact> contact_buf_;
   // Contacts of one step, created as joints in a fixed order (sphere index, partner) after the collision
