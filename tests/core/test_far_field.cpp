@@ -2,7 +2,6 @@
 // at an update.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -168,32 +167,4 @@ TEST(MovingWindow, FrontLeadsTheBowAndThePushAndNeverRecedes) {
   EXPECT_EQ(w.insert_below_x_m, 5.2);
   w = moving_window(1.0, 3.0, 2.0, 5.2, 2.0, 1.5);  // the pushed ice has stopped: the front stays
   EXPECT_EQ(w.insert_below_x_m, 5.2);
-}
-
-// The push the front follows: the moving pieces connected to the bow through one another (surfaces less than the
-// gap apart), not a moving piece on its own ahead of them.
-TEST(PushFront, FollowsOnlyTheMovingIceConnectedToTheBow) {
-  constexpr double kR = 0.01, kGap = 0.005, kBow = 0.0;
-  const double none = -std::numeric_limits<double>::infinity();
-  std::vector<MovingPiece> moving;
-  for (int i = 0; i < 10; ++i) moving.push_back({0.011 + 0.021 * i, 0.0, 0.0, kR});  // surfaces 1 mm apart
-  const double chain_end = 0.011 + 0.021 * 9;
-  EXPECT_DOUBLE_EQ(foremost_of_push(moving, kBow, kGap), chain_end);
-  moving.push_back({0.5, 0.0, 0.0, kR});                 // on its own far ahead
-  moving.push_back({chain_end + 2 * kR + 0.006, 0.0, 0.0, kR});  // 6 mm beyond the chain's end: not touching
-  EXPECT_DOUBLE_EQ(foremost_of_push(moving, kBow, kGap), chain_end);
-  moving.push_back({chain_end, 0.024, 0.0, kR});              // beside the chain's end, 4 mm off: touching
-  moving.push_back({chain_end + 0.015, 0.024, 0.018, kR});    // up and ahead of that one, 3.4 mm off: touching
-  EXPECT_DOUBLE_EQ(foremost_of_push(moving, kBow, kGap), chain_end + 0.015);
-  // the chain ahead of the bow but its rear beyond the gap: nothing is the push
-  std::vector<MovingPiece> detached;
-  for (int i = 0; i < 10; ++i) detached.push_back({0.016 + 0.021 * i, 0.0, 0.0, kR});
-  EXPECT_EQ(foremost_of_push(detached, kBow, kGap), none);
-  // ice beside the hull moving ahead is at the bow, however far behind it
-  detached.push_back({-0.5, 0.4, 0.0, kR});
-  EXPECT_DOUBLE_EQ(foremost_of_push(detached, kBow, kGap), -0.5);
-  EXPECT_EQ(foremost_of_push({}, kBow, kGap), none);
-  // the same pieces in another order give the same front
-  std::reverse(moving.begin(), moving.end());
-  EXPECT_DOUBLE_EQ(foremost_of_push(moving, kBow, kGap), chain_end + 0.015);
 }

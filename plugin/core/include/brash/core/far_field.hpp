@@ -12,8 +12,8 @@
 //   - by neighbour speed (V > 0): an idle piece wakes as soon as an active piece touching it moves faster
 //     than V (a resting bed stays idle, where the force rule wakes it through its resting contacts);
 //   - by push front (brash-ode; front speed U > 0): ahead of the bow nothing wakes: the window's front lies
-//     `ahead` beyond the bow and beyond the foremost active piece moving ahead (+x) faster than U that such pieces
-//     connect to the bow (foremost_of_push), and never recedes, and the bed ahead is idle from the first update on, moving or not, so the push
+//     `ahead` beyond the bow and beyond the foremost active piece moving ahead (+x) faster than U, and never
+//     recedes, and the bed ahead is idle from the first update on, moving or not, so the push
 //     meets active ice instead of a wall (on rigid contacts the pushed ice shows the push neither as its speed at
 //     the wall nor as a force apart from its resting load); beside the hull and behind the stern, by force;
 //   - at a membership update a piece inside the window is active; ahead of the bow a piece keeps its state
@@ -22,7 +22,6 @@
 //     first update ahead of the window, by push front, always).
 #pragma once
 #include <limits>
-#include <vector>
 
 #include "brash/core/params.hpp"
 #include "brash/far_field_options.hpp"
@@ -81,17 +80,6 @@ bool wakes(const WakeRule& rule, double fx_N, double fy_N, FarFieldZone zone = F
 // The window's front with the push front (WakeBy::PushFront): `ahead` beyond the bow and beyond the foremost active
 // piece moving ahead faster than the front speed (-infinity: none), never behind the previous front.
 double push_front_x(double bow_x_m, double foremost_moving_x_m, double previous_front_x_m, double ahead_m);
-
-// The push the front follows (WakeBy::PushFront): of the active pieces moving ahead faster than the front speed,
-// those connected to the bow through one another, a piece counting as touching another when their surfaces are
-// less than `gap` apart and as at the bow when its rear is less than `gap` ahead of it (or it lies behind the bow:
-// ice beside the hull pushed forward). Returns the foremost centre x of them (-infinity: none). A piece moving ahead
-// on its own, away from that chain, is not the push: on rigid contacts the ice that enters the window at rest
-// stirs where it meets the active ice, and a front that followed it would run ahead of the push by itself.
-struct MovingPiece {
-  double x_m = 0, y_m = 0, z_m = 0, radius_m = 0;
-};
-double foremost_of_push(const std::vector<MovingPiece>& moving, double bow_x_m, double gap_m);
 
 // Does an idle piece touching a piece with this velocity wake now? (by neighbour speed: |v| > V; never
 // otherwise). An idle neighbour has v = 0, so the caller need not know whether the neighbour is active.

@@ -268,9 +268,6 @@ class World {
   bool cull_geoms_stale_ = false;
   // Wake by push front: the window's front (core::push_front_x; -infinity before the first update; in restarts)
   double push_front_x_m_ = -std::numeric_limits<double>::infinity();
-  std::vector<core::MovingPiece> moving_;  // the membership update's buffer: the ice moving ahead
-  // two moving pieces are one push when their surfaces are less than this many largest radii apart
-  static constexpr double kPushGapRadii = 0.5;
   long cull_first_step_ = 0;  // begin_cull_at_step
   std::vector<dContact> contact_buf_;
   // Contacts of one step, created as joints in a fixed order (sphere index, partner) after the collision
