@@ -121,8 +121,8 @@ def check_path_token(root, page_dir, token, tops):
         if not inside(root, target):
             return "path outside the repository: %s" % token
         return None if os.path.exists(target) else "no such file: %s" % token
-    if first in ("runs", "build"):
-        return None  # outputs (build/bin/X is checked as a command)
+    if first in ("runs", "build") or "generated" in t.split("/"):
+        return None  # outputs (build/bin/X is checked as a command; a case's generated/ is written by brash-pack)
     if first in tops:
         if os.path.exists(os.path.join(root, t)) or (page_dir and os.path.exists(os.path.join(root, page_dir, t))):
             return None
