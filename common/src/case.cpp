@@ -471,7 +471,8 @@ Case parse_case(const std::string& yaml_text, const fs::path& base_dir, const st
     if (c.speedups.farfield && c.speedups.farfield_wake_by == WakeBy::PushFront &&
         !(c.speedups.farfield_front_speed_m_s > 0))
       r.fail(s["farfield_front_speed_m_s"], "speedups.farfield_front_speed_m_s",
-             "must be > 0 with farfield_wake_by: push_front (the window's front follows the pieces moving ahead faster than it)");
+             "must be > 0 with farfield_wake_by: push_front (the window's front follows the pieces moving "
+             "ahead faster than it)");
     r.boolean(s, "speedups", "moving_window", c.speedups.moving_window);
     r.num(s, "speedups", "moving_window_ahead_m", c.speedups.moving_window_ahead_m, positive, "> 0");
     r.num(s, "speedups", "moving_window_behind_m", c.speedups.moving_window_behind_m, positive, "> 0");

@@ -76,8 +76,9 @@ TEST(FarFieldMembership, AheadKeepsItsStateAfterTheFirstUpdate) {
   EXPECT_FALSE(idle_after_update(kWake, FarFieldZone::Ahead, true, true, kFast));
 }
 
-// By push front the bed ahead of the window is held out from the first update on, moving or not (as the moving
-// window holds it); afterwards, as by force, a piece ahead keeps its state; behind and beside, by speed.
+// By push front the bed ahead of the window is held out from the first update on, moving or not (as the
+// moving window holds it); afterwards, as by force, a piece ahead keeps its state; behind and beside, by
+// speed.
 TEST(FarFieldMembership, ByPushFrontTheBedAheadIsIdleFromTheFirstUpdate) {
   const WakeRule rule{0.02, 0.005, brash::WakeBy::PushFront, 0.005};
   EXPECT_TRUE(idle_after_update(rule, FarFieldZone::Ahead, false, true, kFast));

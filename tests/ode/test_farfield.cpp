@@ -129,8 +129,8 @@ TEST(OdeFarField, PushFrontTakesThePushedChainIntoTheWindow) {
   EXPECT_FALSE(e.culled[i]) << "sphere " << i;
   }
   EXPECT_EQ(e.woken, 0);
-  // the bed ahead is held out from the start, moving or not: the lone moving sphere too (it stays at x = 0.4 m;
-  // the front, 0.035 m ahead of the pushed chain, does not reach it)
+  // the bed ahead is held out from the start, moving or not: the lone moving sphere too (it stays at
+  // x = 0.4 m; the front, 0.035 m ahead of the pushed chain, does not reach it)
   EXPECT_TRUE(e.culled[kChain + 1]) << "a lone moving sphere far ahead is held out";
   EXPECT_EQ(e.x[kChain + 1].x(), 0.4);
   EXPECT_TRUE(e.culled[kChain]);
@@ -283,8 +283,8 @@ TEST(OdeFarField, SettlingBeforeTheCullIntegratesTheWholeBed) {
 
 namespace {
 // Floating spheres ahead of the box hull at rest (its window: 0.035 m): one at rest at x = 0.06 m, beyond the
-// window; one at (mover_x_m, 0.1 m) moving at mover_m_s along x; one heaving at 0.02 m/s at (0.03 m, -0.1 m), in
-// the window. Returns whether the resting one is culled after 0.1 s (membership every 20 steps).
+// window; one at (mover_x_m, 0.1 m) moving at mover_m_s along x; one heaving at 0.02 m/s at (0.03 m, -0.1 m),
+// in the window. Returns whether the resting one is culled after 0.1 s (membership every 20 steps).
 bool resting_sphere_culled(double mover_x_m, double mover_m_s) {
   static OdeLibrary lib;
   Skips k;
@@ -303,12 +303,15 @@ bool resting_sphere_culled(double mover_x_m, double mover_m_s) {
 }
 }  // namespace
 
-// The push front follows the ice pushed ahead, along the ship's course: a piece in the window moving forward faster
-// than the front speed takes the front past the resting one (which then is active); one moving back out of the
-// channel (as the bed spreads from an open end) or heaving does not, nor does one moving ahead far beyond the window
-// at the start (held out, as the moving window holds the bed ahead: ice spreading out of the far open end).
+// The push front follows the ice pushed ahead, along the ship's course: a piece in the window moving forward
+// faster than the front speed takes the front past the resting one (which then is active); one moving back
+// out of the channel (as the bed spreads from an open end) or heaving does not, nor does one moving ahead far
+// beyond the window at the start (held out, as the moving window holds the bed ahead: ice spreading out of
+// the far open end).
 TEST(OdeFarField, PushFrontFollowsOnlyIceMovingAhead) {
   EXPECT_FALSE(resting_sphere_culled(0.03, 0.02)) << "ice in the window moving ahead takes the front with it";
-  EXPECT_TRUE(resting_sphere_culled(0.03, -0.02)) << "ice moving back or heaving leaves the front where it is";
-  EXPECT_TRUE(resting_sphere_culled(0.5, 0.02)) << "ice moving ahead far beyond the window at the start is held out";
+  EXPECT_TRUE(resting_sphere_culled(0.03, -0.02))
+      << "ice moving back or heaving leaves the front where it is";
+  EXPECT_TRUE(resting_sphere_culled(0.5, 0.02))
+      << "ice moving ahead far beyond the window at the start is held out";
 }

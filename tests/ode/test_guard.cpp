@@ -309,7 +309,9 @@ TEST_F(OdeGuard, CaseFarFieldIsTheCullWithTheCasesWindowUnlessTheCommandLineSays
   EXPECT_EQ(meta["skips"].value("cull_wake_by", std::string()), "push_front") << front.meta;
   EXPECT_DOUBLE_EQ(meta["skips"].value("cull_front_speed_m_s", -1.0), 0.005) << front.meta;
   const std::string log = slurp(front.run / "log.txt");
-  EXPECT_NE(log.find("the front 0.3 m ahead of the foremost piece moving ahead faster than 0.005 m/s"), std::string::npos) << log;
+  EXPECT_NE(log.find("the front 0.3 m ahead of the foremost piece moving ahead faster than 0.005 m/s"),
+            std::string::npos)
+      << log;
 }
 
 // bench-ode --scene-from starts from another run's particle dump (its pieces, with their velocities) with the hull

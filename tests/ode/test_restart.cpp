@@ -264,8 +264,8 @@ TEST_F(Restart, PushFrontResumesWithItsFront) {
 }
 
 // With --settle the whole bed is integrated first and the far field's membership updates count from its end
-// (World::begin_cull_at_step): a resumed run skips the settling (the restart file holds the state after it) and
-// keeps that schedule, so it ends as the uninterrupted run does.
+// (World::begin_cull_at_step): a resumed run skips the settling (the restart file holds the state after it)
+// and keeps that schedule, so it ends as the uninterrupted run does.
 TEST_F(Restart, SettlingThenPushFrontResumesOnItsSchedule) {
   const std::string settle = " --settle 0.025 --settle-damping 0.02";
   const std::string settled_line = "settling 0.025 of 0.025 s (50 steps)";
@@ -279,7 +279,8 @@ TEST_F(Restart, SettlingThenPushFrontResumesOnItsSchedule) {
   ASSERT_EQ(run(resume_cmd(s)), 0);
   const std::string resumed_log = slurp(s / "log.txt");
   EXPECT_NE(resumed_log.find(settled_line), std::string::npos) << resumed_log;
-  EXPECT_EQ(resumed_log.find(settled_line), resumed_log.rfind(settled_line)) << "the resumed run settled again";
+  EXPECT_EQ(resumed_log.find(settled_line), resumed_log.rfind(settled_line))
+      << "the resumed run settled again";
   expect_resumed_matches(r, s);
 }
 

@@ -40,8 +40,8 @@ bool idle_after_update(const WakeRule& rule, FarFieldZone zone, bool was_idle, b
   if (zone == FarFieldZone::Inside) return false;
   if (!rule.enabled()) return true;
   if (zone == FarFieldZone::Ahead) {
-    // by push front the bed ahead is held out from the start, moving or not, as the moving window holds it: ice
-    // that spreads out of an open channel end far ahead does not take the front there
+    // by push front the bed ahead is held out from the start, moving or not, as the moving window holds it:
+    // ice that spreads out of an open channel end far ahead does not take the front there
     if (first_update && rule.front_follows_push()) return true;
     if (!first_update) return was_idle;
   }

@@ -30,7 +30,8 @@ int main(int argc, char** argv) {
                  "with --scene-from: the dump's model time [s]; the hull starts where it was then")
       ->check(CLI::NonNegativeNumber);
   brash::ode::add_run_options(app, o, implicit_mode);
-  app.add_flag("--progress", o.progress, "progress lines on stderr, as brash-ode writes them (off by default here)");
+  app.add_flag("--progress", o.progress,
+               "progress lines on stderr, as brash-ode writes them (off by default here)");
   CLI11_PARSE(app, argc, argv);
   o.implicit_mode = brash::ode::parse_implicit_mode(implicit_mode);
   try {

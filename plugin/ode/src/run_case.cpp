@@ -168,7 +168,7 @@ namespace {
 // The progress line's note on the push front: where the window's front lies against the bow.
 std::string front_note(const World& w) {
   if (!w.wake_rule().front_follows_push() || !std::isfinite(w.push_front_x())) return "";
-  return fmt::format("  front {:+.2f} m from the bow", w.push_front_x() - (w.hull_position().x() + w.hull_max_x_body()));
+  return fmt::format("  front {:+.2f} m from the bow", w.push_front_x() - w.bow_x());
 }
 
 // One attempt of an ODE run: the world, the stepping loop and the outputs it writes itself (log.txt, particles/,
@@ -477,13 +477,14 @@ bool Stepping::step(long k, run::Attempt& a) {
   a.t_last_s = t;
   a.particle_steps = double(w.stats().particle_steps - ps_loop0_);
   if (k % n_check_ == 0 &&
-      monitor_.progress(t, a.particle_steps,
-                        fmt::format("Fx {:+.3f} N  awake {}  contacts {}{}{}", f.x(), w.stats().awake_last,
-                                    w.stats().contacts_last,
-                                    w.wake_rule().enabled() ? fmt::format("  woken {} (by speed {})", w.stats().woken,
-                                                                          w.stats().woken_by_speed)
-                                                            : "",
-                                    front_note(w))) &&
+      monitor_.progress(
+          t, a.particle_steps,
+          fmt::format("Fx {:+.3f} N  awake {}  contacts {}{}{}", f.x(), w.stats().awake_last,
+                      w.stats().contacts_last,
+                      w.wake_rule().enabled()
+                          ? fmt::format("  woken {} (by speed {})", w.stats().woken, w.stats().woken_by_speed)
+                          : "",
+                      front_note(w))) &&
       monitor_.stop_reason() == run::StopReason::EarlyStop) {
     log(fmt::format("early stop at t = {:.4f} s", t));
     dump(k);

@@ -216,16 +216,15 @@ void World::update_cull() {
   const core::WakeRule rule = wake_rule();
   const bool first_update = stats_.steps == cull_first_step_;
   if (rule.front_follows_push()) {
-    // the foremost active piece moving ahead (+x, the ship's course) faster than U: the push; not the ice that
-    // heaves or spreads out of an open channel end on its own. At the first update the front starts at the bow
-    // (the bed ahead is held out then, moving or not: core::idle_after_update).
+    // the foremost active piece moving ahead (+x, the ship's course) faster than U: the push; not the ice
+    // that heaves or spreads out of an open channel end on its own. At the first update the front starts at
+    // the bow (the bed ahead is held out then, moving or not: core::idle_after_update).
     double foremost = -std::numeric_limits<double>::infinity();
     if (!first_update)
       for (const auto& s : spheres_)
         if (!s.culled && !s.retired && dBodyGetLinearVel(s.body)[0] > rule.front_speed_m_s)
           foremost = std::max(foremost, dBodyGetPosition(s.body)[0]);
-    push_front_x_m_ =
-        core::push_front_x(hull_position().x() + hull_max_[0], foremost, push_front_x_m_, skips_.cull_ahead_m);
+    push_front_x_m_ = core::push_front_x(bow_x(), foremost, push_front_x_m_, skips_.cull_ahead_m);
   }
   const core::FarFieldWindow window = cull_window();
   for (auto& s : spheres_) {

@@ -12,8 +12,9 @@ namespace brash {
 //   NeighbourSpeed: an active piece touching it moves faster than the wake speed. A resting bed stays idle;
 //     the push wakes the ice it moves.
 //   PushFront: ahead of the bow no wake: the window's front follows the push (it lies the window's distance
-//     ahead of the foremost piece moving ahead faster than the front speed, and never recedes; the bed ahead is
-//     idle from the start), so the push always meets active ice; beside the hull and behind the stern, by force.
+//     ahead of the foremost piece moving ahead faster than the front speed, and never recedes; the bed ahead
+//     is idle from the start), so the push always meets active ice; beside the hull and behind the stern, by
+//     force.
 enum class WakeBy { Force, NeighbourSpeed, PushFront };
 
 constexpr std::string_view to_string(WakeBy w) {

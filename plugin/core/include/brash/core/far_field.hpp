@@ -14,12 +14,13 @@
 //   - by push front (brash-ode; front speed U > 0): ahead of the bow nothing wakes: the window's front lies
 //     `ahead` beyond the bow and beyond the foremost active piece moving ahead (+x) faster than U, and never
 //     recedes, and the bed ahead is idle from the first update on, moving or not, so the push
-//     meets active ice instead of a wall (on rigid contacts the pushed ice shows the push neither as its speed at
-//     the wall nor as a force apart from its resting load); beside the hull and behind the stern, by force;
+//     meets active ice instead of a wall (on rigid contacts the pushed ice shows the push neither as its
+//     speed at the wall nor as a force apart from its resting load); beside the hull and behind the stern, by
+//     force;
 //   - at a membership update a piece inside the window is active; ahead of the bow a piece keeps its state
 //     (one the push has reached stays active: re-freezing slow pieces of a loaded bed would jam it again);
-//     behind the stern, beside the hull and at a run's first update a piece is idle once no faster than V (at the
-//     first update ahead of the window, by push front, always).
+//     behind the stern, beside the hull and at a run's first update a piece is idle once no faster than V (at
+//     the first update ahead of the window, by push front, always).
 #pragma once
 #include <limits>
 
@@ -53,8 +54,8 @@ struct WakeRule {
   double speed_m_s = 0;  // where the speed decides (see above): idle once |v| <= this; by neighbour speed also:
                          // wake when a touching active piece is faster than this (0: never)
   WakeBy by = WakeBy::Force;
-  double front_speed_m_s = 0;  // by push front: the front follows the pieces moving ahead faster than this (0: no
-                               // rule)
+  double front_speed_m_s = 0;  // by push front: the front follows the pieces moving ahead faster than this
+                               // (0: no rule)
   bool enabled() const {
     switch (by) {
       case WakeBy::Force: return force_N > 0;
@@ -77,8 +78,8 @@ double wake_force_N(double weight_fraction, double mean_diameter_m, double ice_d
 // in `zone` Beside or Behind; never otherwise)
 bool wakes(const WakeRule& rule, double fx_N, double fy_N, FarFieldZone zone = FarFieldZone::Beside);
 
-// The window's front with the push front (WakeBy::PushFront): `ahead` beyond the bow and beyond the foremost active
-// piece moving ahead faster than the front speed (-infinity: none), never behind the previous front.
+// The window's front with the push front (WakeBy::PushFront): `ahead` beyond the bow and beyond the foremost
+// active piece moving ahead faster than the front speed (-infinity: none), never behind the previous front.
 double push_front_x(double bow_x_m, double foremost_moving_x_m, double previous_front_x_m, double ahead_m);
 
 // Does an idle piece touching a piece with this velocity wake now? (by neighbour speed: |v| > V; never
@@ -92,9 +93,9 @@ constexpr bool touching(double dx_m, double dy_m, double dz_m, double r1_m, doub
 }
 
 // Membership at an update: is the piece idle afterwards? `first_update`: the run's first (fix brash/farfield
-// also counts a resumed run's first; brash-ode restores the idle set exactly from its restart file). Ahead of the
-// window a piece keeps its state, except at the first update, where it is idle when no faster than the wake speed,
-// or by push front always.
+// also counts a resumed run's first; brash-ode restores the idle set exactly from its restart file). Ahead of
+// the window a piece keeps its state, except at the first update, where it is idle when no faster than the
+// wake speed, or by push front always.
 bool idle_after_update(const WakeRule& rule, FarFieldZone zone, bool was_idle, bool first_update,
                        const Vec3& velocity_m_s);
 

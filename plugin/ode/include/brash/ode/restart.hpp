@@ -18,8 +18,9 @@
 
 namespace brash::ode::restart {
 
-constexpr std::uint32_t kVersion = 5;  // 2: per-sphere "retired" flag (World::retire); 3: spheres in a spatial order;
-                                        // 4: the push front (wake by push front); 5: the wake counts
+// 2: per-sphere "retired" flag (World::retire); 3: spheres in a spatial order; 4: the push front (wake by
+// push front); 5: the wake counts
+constexpr std::uint32_t kVersion = 5;
 
 class Writer {
  public:

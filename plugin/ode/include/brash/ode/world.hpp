@@ -94,12 +94,14 @@ struct Skips {
   int cull_every = 20;                  // membership update every n steps
   // The wake rule: a culled sphere wakes when the horizontal force of the step's contacts on it exceeds
   // wake_force_N (read from the joints' feedback after the step), or (wake_by NeighbourSpeed) when an active
-  // sphere in contact with it moved faster than wake_speed_m_s into the step (before it: the hard contact with a
-  // culled sphere stops it within the step); with wake_by PushFront nothing wakes ahead of the bow: the window's
-  // front follows the spheres moving ahead (+x) faster than front_speed_m_s (core::push_front_x). At an update a
-  // sphere ahead of the bow keeps its state, one behind the stern, beside the hull or at the first update is
-  // culled once no faster than wake_speed_m_s (ahead of the bow at the first update, by push front, always). wake_force_N = 0: the window alone (the culled ice is an immovable wall that jams the
-  // pushed bed, docs/performance.md). brash-ode sets both from the case's speedups.farfield_wake_*.
+  // sphere in contact with it moved faster than wake_speed_m_s into the step (before it: the hard contact
+  // with a culled sphere stops it within the step); with wake_by PushFront nothing wakes ahead of the bow:
+  // the window's front follows the spheres moving ahead (+x) faster than front_speed_m_s
+  // (core::push_front_x). At an update a sphere ahead of the bow keeps its state, one behind the stern,
+  // beside the hull or at the first update is culled once no faster than wake_speed_m_s (ahead of the bow at
+  // the first update, by push front, always). wake_force_N = 0: the window alone (the culled ice is an
+  // immovable wall that jams the pushed bed, docs/performance.md). brash-ode sets both from the case's
+  // speedups.farfield_wake_*.
   double wake_force_N = 0;
   double wake_speed_m_s = 0;
   WakeBy wake_by = WakeBy::Force;
@@ -203,6 +205,7 @@ class World {
   std::size_t hull_contacts() const { return hull_contacts_; }
   double hull_min_x_body() const { return hull_min_[0]; }
   double hull_max_x_body() const { return hull_max_[0]; }
+  double bow_x() const { return hull_position().x() + hull_max_[0]; }  // the hull's foremost x now
   double hull_half_beam() const { return std::max(std::abs(hull_min_[1]), std::abs(hull_max_[1])); }
   // By push front: the window's front (x; -infinity before the first membership update).
   double push_front_x() const { return push_front_x_m_; }
