@@ -182,10 +182,9 @@ void World::set_damping(double linear, double angular) {
 }
 
 core::FarFieldWindow World::cull_window() const {
-  const Vec3 h = hull_position();
   core::FarFieldWindow w =
-      core::far_field_window(h.x() + hull_min_[0], h.x() + hull_max_[0], skips_.cull_behind_m, skips_.cull_ahead_m);
-  w.centre_y_m = h.y();
+      core::far_field_window(stern_x(), bow_x(), skips_.cull_behind_m, skips_.cull_ahead_m);
+  w.centre_y_m = hull_position().y();
   w.half_width_m = hull_half_beam() + skips_.cull_side_m;
   if (wake_rule().front_follows_push()) w.hi_x_m = std::max(w.hi_x_m, push_front_x_m_);
   return w;

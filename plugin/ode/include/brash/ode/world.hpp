@@ -203,7 +203,8 @@ class World {
   // Force of the ice on the hull during the last step (contacts only), and its number of contacts.
   const Vec3& hull_force() const { return hull_force_N_; }
   std::size_t hull_contacts() const { return hull_contacts_; }
-  double bow_x() const { return hull_position().x() + hull_max_[0]; }  // the hull's foremost x now
+  double bow_x() const { return hull_position().x() + hull_max_[0]; }    // the hull's foremost x now
+  double stern_x() const { return hull_position().x() + hull_min_[0]; }  // the hull's aftmost x now
   double hull_half_beam() const { return std::max(std::abs(hull_min_[1]), std::abs(hull_max_[1])); }
   // By push front: the window's front (x; -infinity before the first membership update).
   double push_front_x() const { return push_front_x_m_; }
