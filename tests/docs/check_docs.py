@@ -14,7 +14,7 @@ Pages: every *.md under ROOT (not build*/, runs/, hidden folders, tests/docs/fix
   (b) every command named in code as brash-xxx (or build/bin/brash-xxx, $B/brash-xxx) is an executable that
       a CMakeLists.txt under ROOT defines (add_executable); a file name (brash-x.log), a job name
       (--job-name=brash-x) or a log prefix ([brash-x]) is not a command;
-  (c) no reference outside the repository (../shared, a link or path that leaves ROOT), no `git show`
+  (c) no reference outside the repository (a ../name anywhere on the page, a link or a path that leaves ROOT), no `git show`
       citation, no work-period label (session N, "(session", "this session", "sessions", issue N [item M])
       and no machine-history phrase ("lost with", "the old machine", "since replaced", "on a quiet machine"), no
       date (YYYY-MM-DD: when a result was found is history, not a fact about the project).
@@ -32,11 +32,12 @@ LINK = re.compile(r"(?<!!)\[[^\]]*\]\(([^)\s]+)(?:\s+\"[^\"]*\")?\)")
 INLINE_CODE = re.compile(r"`([^`]+)`")
 COMMAND = re.compile(r"(?<![\w.=\[-])brash-[a-z0-9][a-z0-9-]*")
 OUTPUT_OPTIONS = {"--out", "-o", "--output", ">", ">>", "--runs-root", "--prefix"}
+# (c): a parent-folder reference anywhere on a line (prose or code), checked against where it leads
+PARENT_REF = re.compile(r"(?<![\w./-])((?:\.\./)+[\w.-]+)")
 ADD_EXE = re.compile(r"add_executable\(\s*([A-Za-z0-9_.-]+)")
 
 # (c): text that is never true "now" for a reader of the repository.
 FORBIDDEN = [
-    (re.compile(r"\.\./shared\b"), "reference outside the repository (../shared)"),
     (re.compile(r"\bgit show\b"), "git show citation (state the fact, name its source in the repository)"),
     (re.compile(r"\bsessions?\s+\d+", re.I), "work-period label (session N)"),
     (re.compile(r"\(session\b", re.I), "work-period label ((session ...)"),
@@ -144,6 +145,9 @@ def check_page(root, page, exes, tops):
         for pattern, what in FORBIDDEN:
             if pattern.search(line):
                 problems.append((n, what))
+        for m in PARENT_REF.finditer(line):
+            if not inside(root, os.path.join(root, page_dir, m.group(1))):
+                problems.append((n, "reference outside the repository: %s" % m.group(1)))
         if fenced:
             continue
         for m in LINK.finditer(INLINE_CODE.sub("", line)):
