@@ -70,69 +70,6 @@ std::string lower_extension(const fs::path& file) {
   return e;
 }
 
-// Wavefront OBJ: `v x y z` and `f a b c ...` (a/b/c may carry /texture/normal indices, negative = from the end);
-// polygons are split into a fan of triangles. Vertices at the same position are welded (exporters that split
-// vertices by normal would otherwise leave the surface open).
-brash::hull::Mesh read_obj(const fs::path& file) {
-  std::ifstream in(file);
-  if (!in) throw brash::InputError(fmt::format("{}: cannot open the file", file.string()));
-  std::vector<Eigen::Vector3d> raw;
-  std::vector<int> weld;  // raw vertex -> welded index
-  std::map<std::array<double, 3>, int> seen;
-  brash::hull::Mesh mesh;
-  std::string line;
-  for (int line_no = 1; std::getline(in, line); ++line_no) {
-    std::istringstream ls(line);
-    std::string tag;
-    ls >> tag;
-    const auto bad = [&](const std::string& what) {
-      return brash::InputError(fmt::format("{}:{}: {} ('{}')", file.string(), line_no, what, line));
-    };
-    if (tag == "v") {
-      std::array<double, 3> p{};
-      if (!(ls >> p[0] >> p[1] >> p[2])) throw bad("a vertex needs three numbers");
-      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) throw bad("vertex is not finite");
-      raw.emplace_back(p[0], p[1], p[2]);
-      const auto [it, inserted] = seen.emplace(p, static_cast<int>(mesh.vertices.size()));
-      if (inserted) mesh.vertices.emplace_back(p[0], p[1], p[2]);
-      weld.push_back(it->second);
-    } else if (tag == "f") {
-      std::vector<int> poly;
-      for (std::string ref; ls >> ref;) {
-        long idx = 0;
-        try {
-          idx = std::stol(ref.substr(0, ref.find('/')));
-        } catch (const std::exception&) {
-          throw bad(fmt::format("face index '{}' is not a number", ref));
-        }
-        const long n = static_cast<long>(raw.size());
-        const long zero_based = idx > 0 ? idx - 1 : n + idx;
-        if (idx == 0 || zero_based < 0 || zero_based >= n)
-          throw bad(fmt::format("face index {} outside the {} vertices read so far", idx, n));
-        poly.push_back(weld[static_cast<std::size_t>(zero_based)]);
-      }
-      if (poly.size() < 3) throw bad("a face needs at least three vertices");
-      for (std::size_t k = 1; k + 1 < poly.size(); ++k) mesh.faces.push_back({poly[0], poly[k], poly[k + 1]});
-    }
-  }
-  if (mesh.faces.empty()) throw brash::InputError(fmt::format("{}: no faces ('f' lines) in the OBJ file", file.string()));
-  return mesh;
-}
-
-// Formats other than STL and OBJ go through meshio in /usr/bin/python3 (the hull library's reader): say plainly
-// when that interpreter or its meshio is missing instead of passing on a Python traceback.
-void require_meshio(const fs::path& file) {
-  const char* python = "/usr/bin/python3";
-  const auto hint = fmt::format("convert the hull to STL or OBJ, or install the Debian package python3-meshio");
-  if (::access(python, X_OK) != 0)
-    throw brash::InputError(fmt::format("{}: {} files are read through meshio, but {} is missing ({})", file.string(),
-                                        lower_extension(file), python, hint));
-  const std::string cmd = fmt::format("{} -c 'import meshio' >/dev/null 2>&1", python);
-  if (std::system(cmd.c_str()) != 0)
-    throw brash::InputError(fmt::format("{}: {} files are read through meshio, but {} cannot import meshio ({})",
-                                        file.string(), lower_extension(file), python, hint));
-}
-
 struct OwnHull {
   fs::path source;              // as given on the command line
   fs::path stl;                 // the STL that goes into the case folder (source, or a converted temporary)
@@ -211,14 +148,9 @@ OwnHull measure_own_hull(const fs::path& source, double draft_m, std::optional<d
     h.stl = source;
     h.case_file_name = source.filename().string();
   } else {
-    // OBJ natively, anything else through meshio; either way the case gets a binary STL, read back here so the
-    // checks see exactly what the engines will (float32 vertices, welded).
-    if (ext == ".obj") {
-      mesh = read_obj(source);
-    } else {
-      require_meshio(source);
-      mesh = hull::read_mesh(source);
-    }
+    // Any other format (hull::read_mesh: OBJ natively, the rest through meshio) goes into the case as a binary STL,
+    // read back here so the checks see exactly what the engines will (float32 vertices, welded).
+    mesh = hull::read_mesh(source);
     h.converted = true;
     h.case_file_name = source.stem().string() + ".stl";
     h.stl = fs::temp_directory_path() / fmt::format("brash_case_hull_{}.stl", ::getpid());

@@ -1,5 +1,5 @@
-// STL reading (binary and ASCII, decided by file size) and writing (binary, atomic), plus the meshio
-// fallback for other formats. Every error names the file.
+// STL reading (binary and ASCII, decided by file size) and writing (binary, atomic), the dispatch by extension
+// (OBJ: obj_io.cpp) and the meshio fallback for other formats. Every error names the file.
 #include <brash/error.hpp>
 #include <brash/hull/mesh.hpp>
 
@@ -15,6 +15,8 @@
 #include <map>
 #include <sstream>
 #include <unistd.h>
+
+#include "mesh_readers.hpp"
 
 namespace brash::hull {
 namespace {
@@ -134,11 +136,25 @@ std::string lower_ext(const fs::path& file) {
   return e;
 }
 
+// Formats other than STL and OBJ go through meshio in /usr/bin/python3: say plainly when that interpreter or its
+// meshio is missing instead of passing on a Python traceback.
+void require_meshio(const fs::path& file) {
+  const char* python = "/usr/bin/python3";
+  const auto hint = fmt::format("convert the hull to STL or OBJ, or install the Debian package python3-meshio");
+  if (::access(python, X_OK) != 0)
+    fail(file, fmt::format("{} files are read through meshio, but {} is missing ({})", lower_ext(file), python, hint));
+  const std::string cmd = fmt::format("{} -c 'import meshio' >/dev/null 2>&1", python);
+  if (std::system(cmd.c_str()) != 0)
+    fail(file, fmt::format("{} files are read through meshio, but {} cannot import meshio ({})", lower_ext(file),
+                           python, hint));
+}
+
 // Other formats: meshio writes a binary STL of the triangles (quads are split) into a temp file.
 Mesh read_with_meshio(const fs::path& file) {
   static std::atomic<int> counter{0};
   if (!fs::exists(file)) fail(file, "cannot open the file (missing)");
   if (fs::is_directory(file)) fail(file, "is a directory, not a mesh file");
+  require_meshio(file);
   const fs::path tmp = fs::temp_directory_path() / fmt::format("brash_hull_{}_{}.stl", ::getpid(), counter++);
   const std::string py =
       "import sys, meshio, numpy as np\n"
@@ -187,7 +203,8 @@ Mesh read_with_meshio(const fs::path& file) {
 }  // namespace
 
 Mesh read_mesh(const fs::path& file) {
-  Mesh mesh = lower_ext(file) == ".stl" ? read_stl(file) : read_with_meshio(file);
+  const std::string ext = lower_ext(file);
+  Mesh mesh = ext == ".stl" ? read_stl(file) : ext == ".obj" ? read_obj(file) : read_with_meshio(file);
   if (mesh.faces.empty()) fail(file, "no triangles in the mesh");
   return mesh;
 }

@@ -151,8 +151,8 @@ RunAnalysis analyze_run(const std::filesystem::path& run_dir) {
     a.notes.push_back("run still in progress (meta.json status 'running'): every number is provisional");
   if (a.case_.farfield_window_alone || a.meta.culled_far_field)
     a.notes.push_back("far field with the window alone (speedups.farfield_wake_force_weight: 0, or brash-ode --cull): "
-                      "ice outside the window was an immovable wall; paired ensembles measured the mean resistance "
-                      "+8 to +20 % too high with it (docs/performance.md, \"The far field's error\")");
+                      "ice outside the window was an immovable wall and the mean resistance is biased high "
+                      "(docs/performance.md, \"The idle far field\")");
   if (a.meta.status == "failed")
     a.notes.push_back(fmt::format("run FAILED (meta.json reason: '{}'): numbers cover the record written before the failure", a.meta.reason));
   if (a.force.tail_dropped)

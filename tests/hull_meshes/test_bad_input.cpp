@@ -188,16 +188,34 @@ TEST(BadInput, KeelNotAtZero) {
   EXPECT_NE(problems.front().find("keel"), std::string::npos);
 }
 
-TEST(BadInput, OtherFormatThroughMeshio) {
+TEST(BadInput, ObjReadNatively) {
   const auto f = temp("box.obj");
   write_bytes(f, "v 0 -0.5 0\nv 2 -0.5 0\nv 2 0.5 0\nv 0 0.5 0\nv 0 -0.5 1\nv 2 -0.5 1\nv 2 0.5 1\nv 0 0.5 1\n"
                  "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n");
   const Mesh m = read_mesh(f);
-  EXPECT_EQ(m.faces.size(), 12u);
+  EXPECT_EQ(m.faces.size(), 12u);  // six quads, each a fan of two triangles
   EXPECT_TRUE(check_mesh(m).ok());
-  EXPECT_NEAR(check_mesh(m).signed_volume_m3, 2.0, 1e-6);
+  EXPECT_NEAR(check_mesh(m).signed_volume_m3, 2.0, 1e-12);  // doubles, not meshio's float32 STL
   fs::remove(f);
-  const auto bad = temp("garbage.obj");
+  const auto bad = temp("bad_index.obj");
+  write_bytes(bad, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
+  expect_error(bad, ":4: face index 9 outside the 3 vertices read so far");
+  fs::remove(bad);
+  const auto empty = temp("garbage.obj");
+  write_bytes(empty, "this is not a mesh\n");
+  expect_error(empty, "no faces ('f' lines) in the OBJ file");
+  fs::remove(empty);
+}
+
+TEST(BadInput, OtherFormatThroughMeshio) {
+  const auto f = temp("tetra.off");
+  write_bytes(f, "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  const Mesh m = read_mesh(f);
+  EXPECT_EQ(m.faces.size(), 4u);
+  EXPECT_TRUE(check_mesh(m).ok());
+  EXPECT_NEAR(check_mesh(m).signed_volume_m3, 1.0 / 6.0, 1e-6);
+  fs::remove(f);
+  const auto bad = temp("garbage.off");
   write_bytes(bad, "this is not a mesh\n");
   expect_error(bad, "meshio could not read it");
   fs::remove(bad);

@@ -100,14 +100,7 @@ void kernel(const FluidParams& p, const KernelArrays& a, double dt_s) {
           im.height_m = h;
           im.waterline_radius_sq_m2 = h * (two_r - h);
           const double area = projected_area(r, im, uz / speed);
-          double cd_speed;  // C_D |u|
-          if (p.drag_law == DragLaw::Constant) {
-            cd_speed = p.drag_coefficient * speed;
-          } else {
-            const double re = speed * two_r / p.kinematic_viscosity_m2_s;
-            cd_speed = re >= 1000.0 ? 0.44 * speed
-                                    : 24.0 * p.kinematic_viscosity_m2_s / two_r * (1.0 + 0.15 * std::pow(re, 0.687));
-          }
+          const double cd_speed = drag_cd_speed(p, speed, two_r);  // C_D |u| (drag.hpp)
           const double k = -0.5 * rho * cd_speed * area;
           Fx += k * ux, Fy += k * uy, Fz += k * uz;
         }

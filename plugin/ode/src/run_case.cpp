@@ -88,8 +88,8 @@ nlohmann::json OdeEngine::meta() const {
 OdeEngine::WakeRefusal OdeEngine::wake_refusal(WakeBy by) const {
   if (by != WakeBy::NeighbourSpeed) return {};
   return {"on brash-ode's rigid contacts a pushed piece stops at the idle ice instead of moving into it, so the push "
-          "never wakes it (+8.45 % ± 0.81 % mean resistance on cases/jbc_narrow, docs/ode.md \"The far field on "
-          "ODE\"); brash-ode idles the far field with the force rule",
+          "never wakes it and the mean resistance is biased high (docs/ode.md, \"The far field on ODE\"); "
+          "brash-ode idles the far field with the force rule",
           WakeBy::Force};
 }
 
@@ -586,11 +586,10 @@ run::Attempt OdeEngine::advance(const fs::path& run_dir, const std::string& rest
     while (std::getline(in, line))
       if (std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf", &r.t_s, &r.fx_N, &r.fy_N, &r.fz_N) == 4) rows_.push_back(r);
   }
-  // docs/performance.md "The far field's error": measured on LIGGGHTS with the same rule
   if (const Skips k = cull_skips(options_, scene_->c); k.cull && !k.wake_rule().enabled())
     fmt::print(stderr, "[brash-ode] warning: --cull with no wake rule (the window alone): the push of the bow "
-                       "cannot reach past the window, which raised the mean resistance by +8 to +20 % in paired "
-                       "LIGGGHTS ensembles\n");
+                       "cannot reach past the window and the mean resistance is biased high "
+                       "(docs/performance.md, \"The idle far field\")\n");
   Stepping stepping(options_, *scene_, run_dir, rows_, monitor);
   return stepping.run(resume, summary_);
 }

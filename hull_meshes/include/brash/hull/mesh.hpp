@@ -1,4 +1,4 @@
-// Triangle meshes of hulls: the Mesh type, STL/meshio reading, binary STL writing, topology checks,
+// Triangle meshes of hulls: the Mesh type, STL/OBJ/meshio reading, binary STL writing, topology checks,
 // unit sanity checks and band clipping. Units are metres; hull frame x forward, y to port, z up.
 #pragma once
 #include <Eigen/Core>
@@ -17,8 +17,9 @@ struct Mesh {
 };
 
 // Reads a hull mesh. STL (binary or ASCII; binary is recognised by its exact size 84 + 50 n, so a binary
-// file whose header starts with "solid" is still read right) is read natively; any other extension is
-// converted to a temporary STL by meshio (/usr/bin/python3). Identical vertices are welded.
+// file whose header starts with "solid" is still read right) and Wavefront OBJ (polygons split into fans of
+// triangles) are read natively; any other extension is converted to a temporary STL by meshio
+// (/usr/bin/python3). Identical vertices are welded.
 // Throws brash::InputError naming the file and the problem (missing, empty, truncated, NaN, no faces).
 Mesh read_mesh(const std::filesystem::path& file);
 

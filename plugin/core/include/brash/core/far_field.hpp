@@ -5,7 +5,7 @@
 // Window: with the hull moving along +x, a piece more than `ahead` ahead of the bow or more than `behind`
 // behind the stern is outside it; brash-ode can also bound it across the channel (beside the hull).
 // The window alone is not enough when the ship's push travels further than `ahead` through the ice: the idle
-// ice is then a wall that jams the pushed bed (+8 to +20 % mean resistance in paired ensembles). The wake
+// ice is then a wall that jams the pushed bed (biased high: docs/performance.md, "The idle far field"). The wake
 // rule lets the push through:
 //   - by force (F > 0): an idle piece wakes as soon as the horizontal force on it (from active neighbours:
 //     idle pieces get no gravity or fluid force) exceeds F;

@@ -13,6 +13,7 @@
 #include <cstddef>
 
 #include "brash/core/added_mass.hpp"
+#include "brash/core/drag.hpp"
 #include "brash/core/immersion.hpp"
 #include "brash/core/params.hpp"
 
@@ -53,29 +54,14 @@ inline Vec3 select_ca(const CaTable& t, double radius_m, const Immersion& im, bo
   return Vec3(t.partial.x(), t.partial.y(), t.partial.z() * im.height_m / (2.0 * radius_m));
 }
 
-inline double drag_coefficient(const FluidParams& p, double speed_m_s, double diameter_m) {
-  if (p.drag_law == DragLaw::Constant) return p.drag_coefficient;
-  const double re = speed_m_s * diameter_m / p.kinematic_viscosity_m2_s;
-  if (re >= 1000.0) return 0.44;
-  return 24.0 / re * (1.0 + 0.15 * std::pow(re, 0.687));
-}
-
-// Eq. 1 on the submerged projected area: F = -1/2 rho C_D A |u| u, u = v - U_flow.
+// Eq. 1 on the submerged projected area: F = -1/2 rho C_D A |u| u, u = v - U_flow (the law: drag.hpp).
 inline Vec3 drag_force(const FluidParams& p, double radius_m, const Immersion& im, const Vec3& velocity) {
   if (im.height_m <= 0.0) return Vec3::Zero();
   const Vec3 u = velocity - p.flow_velocity_m_s;
   const double speed = u.norm();
   if (speed <= 0.0) return Vec3::Zero();
   const double area = projected_area(radius_m, im, u.z() / speed);
-  const double d = 2.0 * radius_m;
-  if (p.drag_law == DragLaw::SchillerNaumann) {
-    // C_D |u| stays finite as |u| -> 0 (Stokes): write it without dividing by Re.
-    const double re = speed * d / p.kinematic_viscosity_m2_s;
-    const double cd_speed =
-        re >= 1000.0 ? 0.44 * speed : 24.0 * p.kinematic_viscosity_m2_s / d * (1.0 + 0.15 * std::pow(re, 0.687));
-    return -0.5 * p.water_density_kg_m3 * cd_speed * area * u;
-  }
-  return -0.5 * p.water_density_kg_m3 * p.drag_coefficient * area * speed * u;
+  return -0.5 * p.water_density_kg_m3 * drag_cd_speed(p, speed, 2.0 * radius_m) * area * u;
 }
 
 inline Vec3 buoyancy_force(const FluidParams& p, const Immersion& im) {
