@@ -117,7 +117,8 @@ TEST(LiggghtsLauncher, CustomLauncherFromTheEnvironmentRunsTheCase) {
   fs::remove_all(dir);
 }
 
-// A blank --launcher is bad input (exit 2) naming the option; a launcher that cannot start fails the run (exit 1).
+// A blank --launcher and a launcher whose program does not exist are bad input (exit 2, nothing written) naming the
+// option or the variable and the program.
 TEST(LiggghtsLauncher, BadLaunchersAreNamed) {
   const fs::path dir = brash::test::fresh_dir("launcher_bad");
   write_short_case(dir / "case");
@@ -126,7 +127,17 @@ TEST(LiggghtsLauncher, BadLaunchersAreNamed) {
   EXPECT_EQ(WEXITSTATUS(rc), 2);
   EXPECT_NE(brash::test::read_text(dir / "blank.log").find("--launcher"), std::string::npos);
   rc = std::system((runner + " --np 2 --launcher /no/such/launcher > '" + (dir / "missing.log").string() + "' 2>&1").c_str());
-  EXPECT_EQ(WEXITSTATUS(rc), 1) << brash::test::read_text(dir / "missing.log");
-  EXPECT_NE(brash::test::read_text(dir / "run/meta.json").find("\"status\": \"failed\""), std::string::npos);
+  EXPECT_EQ(WEXITSTATUS(rc), 2) << brash::test::read_text(dir / "missing.log");
+  EXPECT_NE(brash::test::read_text(dir / "missing.log").find("--launcher: MPI launcher '/no/such/launcher' not found"),
+            std::string::npos)
+      << brash::test::read_text(dir / "missing.log");
+  rc = std::system(("env BRASH_MPI_LAUNCHER='no-such-srun -n {np}' " + runner + " --np 2 > '" +
+                    (dir / "env.log").string() + "' 2>&1").c_str());
+  EXPECT_EQ(WEXITSTATUS(rc), 2) << brash::test::read_text(dir / "env.log");
+  EXPECT_NE(brash::test::read_text(dir / "env.log").find("BRASH_MPI_LAUNCHER: MPI launcher 'no-such-srun' not found (not "
+                                                         "on PATH)"),
+            std::string::npos)
+      << brash::test::read_text(dir / "env.log");
+  EXPECT_FALSE(fs::exists(dir / "run")) << "a refused launcher writes nothing";
   fs::remove_all(dir);
 }

@@ -1,6 +1,8 @@
 #include "mpi_launcher.h"
 
 #include <cstdio>
+#include <cstdlib>
+#include <string_view>
 #include <fmt/format.h>
 #include <sched.h>
 #include <thread>
@@ -92,6 +94,35 @@ std::string resolve_launcher(const std::string& option, const char* env) {
     return env;
   }
   return "mpirun";
+}
+
+namespace {
+
+bool executable(const std::string& file) { return ::access(file.c_str(), X_OK) == 0; }
+
+// As the shell finds a command: a name with a slash as it is, any other along PATH.
+bool program_found(const std::string& program) {
+  if (program.find('/') != std::string::npos) return executable(program);
+  const char* path = std::getenv("PATH");
+  for (std::string_view dirs = path ? path : ""; !dirs.empty();) {
+    const auto colon = dirs.find(':');
+    const std::string_view dir = dirs.substr(0, colon);
+    if (executable((dir.empty() ? std::string(".") : std::string(dir)) + "/" + program)) return true;
+    dirs = colon == std::string_view::npos ? std::string_view() : dirs.substr(colon + 1);
+  }
+  return false;
+}
+
+}  // namespace
+
+void require_launcher_program(const std::string& launcher, const std::string& option, const char* env) {
+  const std::string program = launcher_program(launcher);
+  if (program_found(program)) return;
+  const std::string from = !option.empty()       ? "--launcher"
+                           : (env && *env)       ? "BRASH_MPI_LAUNCHER"
+                                                 : "the default launcher (install openmpi-bin, or give --launcher)";
+  throw InputError(fmt::format("{}: MPI launcher '{}' not found ({})", from, program,
+                               program.find('/') != std::string::npos ? "no executable file there" : "not on PATH"));
 }
 
 LaunchSpec detect_launch(const std::string& launcher, int ranks, bool oversubscribe) {

@@ -27,6 +27,10 @@ std::string launch_prefix(const LaunchSpec& s);
 // mpirun. InputError naming the option (or the variable) when it is blank.
 std::string resolve_launcher(const std::string& option, const char* env);
 
+// InputError when the launcher's program is neither an executable file (a name with a slash) nor found on PATH,
+// naming the program and where the launcher came from (option and env as for resolve_launcher).
+void require_launcher_program(const std::string& launcher, const std::string& option, const char* env);
+
 // The spec for this process: as_root from the effective user, cpus from the affinity mask, open_mpi by asking
 // an mpirun / mpiexec / orterun for its --version (only when ranks > 1).
 LaunchSpec detect_launch(const std::string& launcher, int ranks, bool oversubscribe);

@@ -85,8 +85,10 @@ int main(int argc, char** argv) {
   }
   std::string prefix;
   try {
-    const auto spec = brash::liggghts::detect_launch(
-        brash::liggghts::resolve_launcher(launcher, std::getenv("BRASH_MPI_LAUNCHER")), ranks, oversubscribe);
+    const char* env_launcher = std::getenv("BRASH_MPI_LAUNCHER");
+    const std::string resolved = brash::liggghts::resolve_launcher(launcher, env_launcher);
+    if (ranks > 1) brash::liggghts::require_launcher_program(resolved, launcher, env_launcher);
+    const auto spec = brash::liggghts::detect_launch(resolved, ranks, oversubscribe);
     prefix = brash::liggghts::launch_prefix(spec);
   } catch (const brash::InputError& e) {
     std::cerr << "brash-liggghts-run: error: " << e.what() << "\n";
