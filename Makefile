@@ -36,6 +36,7 @@ test: build
 run: build
 	./scripts/brash-run $(CASE)
 
+# The headline benchmarks in minutes with one summary table (scripts/brash-bench); long studies: bash bench/<name>.sh.
 bench: build
 	./scripts/brash-bench
 
