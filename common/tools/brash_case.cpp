@@ -404,7 +404,7 @@ int get(const std::string& case_arg, const std::string& key) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"brash-case: make, derive and read case folders"};
+  CLI::App app{"brash-case: make, derive and read case folders", "brash-case"};
   app.require_subcommand(1);
   NewCaseOptions o;
   CLI::App* nw = app.add_subcommand("new", "write <cases-dir>/NAME/case.yaml from a template with values replaced");

@@ -14,7 +14,7 @@
 namespace fs = std::filesystem;
 
 int main(int argc, char** argv) {
-  CLI::App app{"brash-pack: channel packing of ice spheres at floating equilibrium for a case"};
+  CLI::App app{"brash-pack: channel packing of ice spheres at floating equilibrium for a case", "brash-pack"};
   std::string case_arg, out_arg, mode_arg;
   std::optional<std::uint64_t> seed;
   std::optional<double> porosity;

@@ -123,7 +123,7 @@ int run_flow(const std::filesystem::path& file, double draft, double speed, cons
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"brash-hull: JBC hull generator and hull mesh checker"};
+  CLI::App app{"brash-hull: JBC hull generator and hull mesh checker", "brash-hull"};
   app.require_subcommand(1);
 
   auto* jbc = app.add_subcommand("jbc", "write the JBC hull as a closed binary STL (x fwd from AP, keel z = 0)");

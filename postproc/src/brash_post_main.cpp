@@ -265,7 +265,8 @@ int run_stability(const fs::path& run_dir, const StabilityOptions& opt, fs::path
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"brash-post: resistance, FSICR, report, plots and ParaView output of a brash run"};
+  CLI::App app{"brash-post: resistance, FSICR, report, plots and ParaView output of a brash run",
+               "brash-post"};
   app.require_subcommand(0, 1);
   fs::path run_dir;
   app.add_option("RUN_DIR", run_dir, "run directory (docs/case_format.md layout)")->check(CLI::ExistingDirectory);

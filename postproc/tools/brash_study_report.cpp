@@ -32,7 +32,8 @@ void write_atomically(const fs::path& path, const std::string& text) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"brash-study-report: a study document from a study manifest and the report.json of its runs"};
+  CLI::App app{"brash-study-report: a study document from a study manifest and the report.json of its runs",
+               "brash-study-report"};
   std::string manifest, out = "study.md", plot, figures, summary_path, title = "brash study", study_command;
   app.add_option("manifest", manifest, "study manifest (tab-separated, see the file header)")->required();
   app.add_option("--out", out, "markdown output")->capture_default_str();

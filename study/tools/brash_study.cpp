@@ -85,7 +85,8 @@ void print_plan(const Plan& plan) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"brash-study: run a study file (study/<name>.yaml) and write the study document"};
+  CLI::App app{"brash-study: run a study file (study/<name>.yaml) and write the study document",
+               "brash-study"};
   Options o;
   app.add_option("--study", o.study, "study file (default: <data>/study/$STUDY.yaml, STUDY=full; data = "
                                      "<prefix>/share/brash or $BRASH_DATA_DIR)");

@@ -1,8 +1,8 @@
 // brash-stability-core: prints the stability map of the core (stability_core.hpp) as Markdown tables.
 //   brash-stability-core [--quick]      (--quick: fewer time steps and a shorter run, for tests)
-#include <cstring>
 #include <vector>
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "stability_core.hpp"
@@ -12,7 +12,13 @@ using stability::Cell;
 using stability::run_cell;
 
 int main(int argc, char** argv) {
-  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  CLI::App app{"brash-stability-core: the stability map of the core's fluid forces (one ice sphere, "
+               "ReferenceSphere) over time step x Ca x treatment x density ratio x impact speed, as Markdown tables "
+               "(docs/stability.md)",
+               "brash-stability-core"};
+  bool quick = false;
+  app.add_flag("--quick", quick, "fewer time steps and a shorter run per cell (for tests)");
+  CLI11_PARSE(app, argc, argv);
   const double paper_speed = 0.482;
   const std::vector<double> dts = quick ? std::vector<double>{5e-5, 1e-3, 2e-2}
                                         : std::vector<double>{1e-5, 5e-5, 1e-4, 1e-3, 5e-3, 1e-2, 2e-2, 5e-2};

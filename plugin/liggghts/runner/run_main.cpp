@@ -55,7 +55,8 @@ int rebuild_record(const fs::path& run_dir) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"brash-liggghts-run: run a case directory with LIGGGHTS and write the brash run layout"};
+  CLI::App app{"brash-liggghts-run: run a case directory with LIGGGHTS and write the brash run layout",
+               "brash-liggghts-run"};
   brash::run::DriverOptions o;
   int ranks = 1;
   fs::path rebuild_dir;

@@ -128,7 +128,8 @@ int settle(const fs::path& case_file, const fs::path& out, double max_s) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"brash-settle: settle a case's packing (no ship, closed channel ends) into a packing file"};
+  CLI::App app{"brash-settle: settle a case's packing (no ship, closed channel ends) into a packing file",
+               "brash-settle"};
   fs::path case_file, out;
   double max_s = 20;
   app.add_option("case_file", case_file, "case.yaml (or its folder)")->required();

@@ -12,7 +12,7 @@
 #include "cli.hpp"
 
 int main(int argc, char** argv) {
-  CLI::App app{"bench-ode: speed of the ODE simulator"};
+  CLI::App app{"bench-ode: speed of the ODE simulator", "bench-ode"};
   brash::ode::RunOptions o;
   o.duration_s = 0.5;
   o.progress = false;

@@ -29,21 +29,21 @@ inline void add_run_options(CLI::App& app, RunOptions& o, std::string& implicit_
                  "broad phase: grid (ours, follows the active spheres) | sap (ODE's sweep and prune); same contacts")
       ->transform(CLI::CheckedTransformer(std::map<std::string, BroadPhase>{{to_string(BroadPhase::Grid), BroadPhase::Grid},
                                                                             {to_string(BroadPhase::Sap), BroadPhase::Sap}}))
-      ->default_str(to_string(BroadPhase::Grid));
+      ->option_text("TEXT:{grid,sap}=grid");
   app.add_option("--sphere-order", o.sphere_order,
                  "order of the ODE bodies: spatial (cells of two mean diameters) | packing (the packing "
                  "file's; slower)")
       ->transform(CLI::CheckedTransformer(
           std::map<std::string, SphereOrder>{{to_string(SphereOrder::Spatial), SphereOrder::Spatial},
                                              {to_string(SphereOrder::Packing), SphereOrder::Packing}}))
-      ->default_str(to_string(SphereOrder::Spatial));
-  app.add_flag("--auto-disable", o.skips.auto_disable, "skip: ODE auto-disable of resting spheres far from the hull");
+      ->option_text("TEXT:{spatial,packing}=spatial");
+  app.add_flag("--auto-disable", o.skips.auto_disable, "ODE auto-disable of resting spheres far from the hull (a speed-up)");
   app.add_option("--disable-linear", o.skips.disable_linear_m_s, "auto-disable linear speed threshold [m/s]")
       ->capture_default_str();
   app.add_option("--disable-angular", o.skips.disable_angular_rad_s, "auto-disable angular speed threshold [rad/s]")
       ->capture_default_str();
   app.add_flag("--cull", o.skips.cull,
-               "skip: freeze spheres outside a window around the hull (static obstacles) until pushed "
+               "freeze spheres outside a window around the hull (static obstacles) until pushed "
                "(the far-field rule of fix brash/farfield; on with the case's speedups.farfield: true)");
   app.add_option("--cull-ahead", o.cull_ahead_m,
                  "cull/auto-disable: active distance ahead of the bow [m] (default: the case's "
@@ -66,8 +66,8 @@ inline void add_run_options(CLI::App& app, RunOptions& o, std::string& implicit_
                  "cull: behind the stern a sphere is frozen once no faster than this [m/s] (default: the case's "
                  "speedups.farfield_wake_speed_m_s)")
       ->check(CLI::NonNegativeNumber);
-  app.add_flag("!--cull-keep-geoms", o.skips.cull_geoms,
-               "cull: keep every frozen sphere in collision detection (slower, same contacts; for checking)");
+  app.add_flag_callback("--cull-keep-geoms", [&o] { o.skips.cull_geoms = false; },
+                        "cull: keep every frozen sphere in collision detection (slower, same contacts; for checking)");
   app.add_flag("--end-walls", o.end_walls, "the case with channel.ends: walls (walls at x = 0 and x = length)");
   app.add_option("--settle", o.settle_s, "settle the whole bed this long [s] before t = 0, the hull parked and every piece "
                  "integrated (a far field begins after it)")
@@ -77,7 +77,7 @@ inline void add_run_options(CLI::App& app, RunOptions& o, std::string& implicit_
                  "is free), to bring the bed to rest on ODE's own contacts")
       ->check(CLI::Range(0.0, 0.5))
       ->capture_default_str();
-  app.add_flag("!--no-progress", o.progress, "no progress line on stderr");
+  app.add_flag_callback("--no-progress", [&o] { o.progress = false; }, "no progress line on stderr");
   app.add_option("--restart-every", o.restart_every_s, "simulated time between restart files in RUN_DIR/restart [s] (0 = none)")
       ->capture_default_str();
   // Testing only: exit like a kill -9 (no cleanup, no final outputs) right after this step.

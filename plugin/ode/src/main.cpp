@@ -29,7 +29,7 @@ int run_single(const std::string& scene, const brash::ode::RunOptions& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"brash-ode: standalone ODE simulator of a ship in a channel of brash ice"};
+  CLI::App app{"brash-ode: standalone ODE simulator of a ship in a channel of brash ice", "brash-ode"};
   brash::ode::RunOptions o;
   std::string scene, implicit_mode = "effective_mass";
   bool no_post = false;

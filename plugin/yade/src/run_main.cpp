@@ -7,7 +7,8 @@
 #include "yade_engine.hpp"
 
 int main(int argc, char** argv) {
-  CLI::App app{"brash-yade-run: run a case directory with YADE and write the brash run layout"};
+  CLI::App app{"brash-yade-run: run a case directory with YADE and write the brash run layout",
+               "brash-yade-run"};
   brash::run::DriverOptions o;
   int threads = 1;
   brash::run::add_driver_options(app, o, "yade", "scene.json, hull.stl");
