@@ -140,7 +140,10 @@ std::vector<SpeedFit> speed_fits(const Study& s) {
     std::vector<double> speeds, means;
     for (const Run* r : runs)
       if (r->speed > 0 && r->mean_N > 0) speeds.push_back(r->speed), means.push_back(r->mean_N);
-    fits.push_back({brash::stats::fit_power_law(speeds, means), key.first, key.second, runs});
+    SpeedFit f{brash::stats::fit_power_law(speeds, means), key.first, key.second, runs, {}, 0};
+    f.laws = brash::stats::fit_speed_laws(speeds, means);
+    f.best_law = brash::stats::best_speed_law(f.laws);
+    fits.push_back(std::move(f));
   }
   return fits;
 }

@@ -28,6 +28,19 @@ namespace {
 
 json finite_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
+// The three forms of the speed law, the preferred one flagged.
+json speed_laws_json(const SpeedFit& f) {
+  json laws = json::array();
+  for (std::size_t i = 0; i < f.laws.size(); ++i) {
+    const auto& l = f.laws[i];
+    laws.push_back({{"form", std::string(l.form)}, {"a", finite_or_null(l.a)}, {"a_ci95", finite_or_null(l.a_ci95)},
+                    {"b", finite_or_null(l.b)}, {"b_ci95", finite_or_null(l.b_ci95)}, {"n", finite_or_null(l.n)},
+                    {"n_ci95", finite_or_null(l.n_ci95)}, {"sse", finite_or_null(l.sse)},
+                    {"aicc", finite_or_null(l.aicc)}, {"preferred", i == f.best_law}});
+  }
+  return laws;
+}
+
 }  // namespace
 
 json summary_json(const Study& s) {
@@ -36,7 +49,8 @@ json summary_json(const Study& s) {
   for (const SpeedFit& f : speed_fits(s))
     summary["fits"].push_back({{"engine", f.engine}, {"fluid_model", f.model}, {"points", f.points},
                                {"n", finite_or_null(f.n)}, {"n_se", finite_or_null(f.n_se)},
-                               {"n_ci95", finite_or_null(f.n_ci95)}, {"a", finite_or_null(f.a)}});
+                               {"n_ci95", finite_or_null(f.n_ci95)}, {"a", finite_or_null(f.a)},
+                               {"speed_laws", speed_laws_json(f)}});
   summary["runs"] = json::array();
   std::size_t failed = 0, running = 0;
   for (const Run& r : s.runs) {

@@ -108,14 +108,20 @@ void write_speed_sweep(const PlotFiles& f, const std::vector<SpeedFit>& fits) {
   p << "set terminal pngcairo size 900,600\nset output '" << f.png.filename().string() << "'\n"
     << "set logscale xy\nset xlabel 'ship speed U [m/s] (model scale)'\nset ylabel 'resistance R [N] (model scale)'\n"
     << "set termoption noenhanced\nset offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05\n"
-    << "set key left top\nset grid\nset title 'Speed sweep: R = a U^n (least squares in log-log)'\nplot ";
+    << "set key left top\nset grid\nset title 'Speed sweep: each group with its preferred speed law (lowest AICc)'\nplot ";
   for (std::size_t i = 0; i < fits.size(); ++i) {
     const SpeedFit& fit = fits[i];
     if (i) p << ", ";
     p << fmt::format("'{}' index {} using 1:2:3 with yerrorbars pt 7 lc {} title '{} {}'", f.dat.filename().string(),
                      i, i + 1, fit.engine, fit.model);
-    if (std::isfinite(fit.n))
-      p << fmt::format(", {} * x**{} with lines lc {} title 'fit n = {:.2f}'", fit.a, fit.n, i + 1, fit.n);
+    if (fit.best_law < fit.laws.size()) {  // the form with the lowest AICc
+      const auto& l = fit.laws[fit.best_law];
+      if (std::isfinite(l.b))
+        p << fmt::format(", {} + {} * x**{} with lines lc {} title 'R = {:.3g} + {:.3g} U^{:.2f}'", l.a, l.b, l.n,
+                         i + 1, l.a, l.b, l.n);
+      else
+        p << fmt::format(", {} * x**{} with lines lc {} title 'R = {:.3g} U^{:.2f}'", l.a, l.n, i + 1, l.a, l.n);
+    }
   }
   p << "\n";
 }

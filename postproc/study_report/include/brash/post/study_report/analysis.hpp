@@ -12,6 +12,7 @@
 
 #include <brash/post/study_report/study.hpp>
 #include <brash/stats/power_law.hpp>
+#include <brash/stats/speed_law.hpp>
 
 namespace brash::post::study_report {
 
@@ -81,10 +82,13 @@ struct ChangeVsBaseline {
 ChangeVsBaseline change_vs_baseline(const Run& run, const Run& baseline);
 
 // ---- speed sweep ----------------------------------------------------------------------------------
-// R = a U^n per engine and fluid model (R in N at model scale, U in m/s): brash/stats/power_law.hpp.
+// R = a U^n per engine and fluid model (R in N at model scale, U in m/s): brash/stats/power_law.hpp; and the
+// speed law in its three forms with the one AICc prefers (brash/stats/speed_law.hpp).
 struct SpeedFit : brash::stats::PowerLawFit {
   std::string engine, model;
   std::vector<const Run*> runs;  // the group's completed runs, in manifest order
+  std::vector<brash::stats::SpeedLawFit> laws;  // a U^n, a + b U^2, a + b U^n
+  std::size_t best_law = 0;                     // index into laws; laws.size() when none has an AICc
 };
 std::vector<SpeedFit> speed_fits(const Study& s);  // by (engine, model)
 
