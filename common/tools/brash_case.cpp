@@ -269,6 +269,15 @@ double bow_gap_over_lpp(const brash::Case& base) {
   return gap > 0 ? gap : 0.01;
 }
 
+// The template's (or base's) published references describe another hull, speed, ice or fluid than the new case:
+// they were left out (brash::keys_beyond_references).
+void note_references_dropped(const fs::path& from, const std::vector<std::string>& keys) {
+  std::cerr << fmt::format("brash-case: note: the published references of {} (references:) are not carried over: "
+                           "they describe its hull, speed, ice and fluid, and {} changed (docs/case_format.md "
+                           "\"references\")\n",
+                           from.string(), fmt::join(keys, ", "));
+}
+
 // ---- brash-case new -----------------------------------------------------------------------------------------------
 
 struct NewCaseOptions {
@@ -412,15 +421,22 @@ int make_case(const NewCaseOptions& o) {
     }
   }
   fs::create_directories(dir);
-  YAML::Emitter e;
-  e << n;
-  {
+  const auto write = [&] {
+    YAML::Emitter e;
+    e << n;
     std::ofstream out(file);
     out << "# Made by brash-case from " << templ.string() << " (keys: docs/case_format.md).\n" << e.c_str() << "\n";
     if (!out) throw brash::InputError(file.string() + ": cannot write");
-  }
+  };
   try {
-    const brash::Case c = brash::load_case(file);
+    write();
+    brash::Case c = brash::load_case(file);
+    if (const auto keys = brash::keys_beyond_references(base, c); base.references.declared() && !keys.empty()) {
+      n.remove("references");
+      write();
+      c = brash::load_case(file);
+      note_references_dropped(templ, keys);
+    }
     if (own) print_own_hull(*own, c.ship.scale_lambda);
     std::cout << fmt::format("brash-case: wrote {} (speed {} m/s, channel {} x {} m, d {} m, fluid {}{})\n",
                              file.string(), c.ship.speed_m_s, c.channel.length_m, c.channel.width_m,
@@ -450,7 +466,10 @@ int derive(const DeriveOptions& o) {
   for (const auto& s : o.sets) overrides.push_back(brash::parse_case_override(s));
   const fs::path base = case_file_of(o.base);
   const brash::Case c = brash::write_derived_case(base, overrides, o.out, o.force);
-  const char* note = brash::same_packing_inputs(c, brash::load_case(base))
+  const brash::Case base_case = brash::load_case(base);
+  if (base_case.references.declared() && !c.references.declared())
+    note_references_dropped(base, brash::keys_beyond_references(base_case, c));
+  const char* note = brash::same_packing_inputs(c, base_case)
                          ? " (the base's)"
                          : " (its own ice: generated when a run starts, or by brash-pack)";
   std::cout << fmt::format("brash-case: wrote {} from {}; packing {}{}\n", (fs::path(o.out) / "case.yaml").string(),

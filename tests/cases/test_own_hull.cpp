@@ -93,6 +93,9 @@ TEST(OwnHull, JbcStlBecomesACaseWithItsMeasuredKeys) {
   EXPECT_NE(r.out.find("bulbous bow"), std::string::npos) << r.out;  // FSICR parameters measured and printed
   EXPECT_NE(r.out.find("alpha 38.1 deg"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("no bow the FSICR formula"), std::string::npos) << r.out;
+  // another hull than the template's: the paper's published values are not this case's
+  EXPECT_FALSE(c.references.declared());
+  EXPECT_NE(r.out.find("published references"), std::string::npos) << r.out;
 }
 
 // An OBJ box (quads, texture indices) is read natively and goes into the case folder as an STL; without --lpp the
