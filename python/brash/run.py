@@ -196,6 +196,9 @@ class Run:
         if rep is None:
             raise RunError(f"{self.path / REPORT_FILE} is missing: run `brash-post {self.path}` first")
         file = self.path / REPORT_FILE
+        if rep.get("met_no_ice"):
+            raise RunError(f"{file}: the hull met no ice in the averaging window {rep.get('window_s')} s: "
+                           "no resistance (report.json met_no_ice)")
         model = rep.get("resistance_model_N")
         if not isinstance(model, dict) or model.get("mean") is None or model.get("ci95") is None:
             raise RunError(f"{file}: no resistance_model_N.mean / ci95 (status {rep.get('status')!r}; "

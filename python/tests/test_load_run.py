@@ -124,6 +124,15 @@ class LoadRun(unittest.TestCase):
         with self.assertRaisesRegex(brash.RunError, r"no resistance_model_N.*'failed'.*guard stop"):
             brash.load_run(self.run_dir).resistance()
 
+    def test_report_of_a_hull_that_met_no_ice(self):
+        (self.run_dir / "report.json").write_text(json.dumps(
+            dict(REPORT, met_no_ice=True, resistance_model_N=None, resistance_full_kN=None,
+                 resistance_full_ci95_kN=None, ratio_fsicr_to_sim=None)))
+        run = brash.load_run(self.run_dir)
+        self.assertTrue(run.report["met_no_ice"])
+        with self.assertRaisesRegex(brash.RunError, r"met no ice in the averaging window \[0\.2, 0\.4\] s"):
+            run.resistance()
+
     def test_not_a_run_directory_names_the_missing_file(self):
         empty = self.root / "empty"
         empty.mkdir()

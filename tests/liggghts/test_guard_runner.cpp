@@ -96,6 +96,25 @@ TEST(LiggghtsGuardRunner, SoftIceBelowFiveMegapascalRuns) {
   fs::remove_all(dir);
 }
 
+// A run whose window ends before the bow reaches the ice (the hull 0.25 m further back than in the small case, its
+// bulb 0.1 m outside the ice, 0.2 s away): the record holds only zero forces, and brash-post says the hull met no
+// ice instead of a resistance of 0 +- 0 N.
+TEST(LiggghtsGuardRunner, WindowBeforeTheBowReachesTheIceMetNoIce) {
+  const fs::path dir = brash::test::fresh_dir("met_no_ice");
+  write_small_case(dir / "case", "0.04", "");
+  edit_case(dir / "case", "\n  start_x_m:[^\n]*", "\n  start_x_m: -7.3");
+  ASSERT_EQ(run_case(dir), 0) << brash::test::read_text(dir / "run.log");
+  const std::string post = std::string("'") + BRASH_BIN_DIR + "/brash-post' '" + (dir / "run").string() +
+                           "' --no-plots --no-paraview > '" + (dir / "post.log").string() + "' 2>&1";
+  ASSERT_EQ(std::system(post.c_str()), 0) << brash::test::read_text(dir / "post.log");
+  const std::string report = brash::test::read_text(dir / "run/report.json");
+  EXPECT_NE(report.find("\"met_no_ice\": true"), std::string::npos) << report;
+  EXPECT_NE(report.find("\"resistance_model_N\": null"), std::string::npos) << report;
+  EXPECT_NE(brash::test::read_text(dir / "post.log").find("the hull met no ice in the window"), std::string::npos)
+      << brash::test::read_text(dir / "post.log");
+  fs::remove_all(dir);
+}
+
 // channel.ends: walls puts the channel's end walls into the scene (primitive planes at x = 0 and x = length, of
 // the walls' material); the bow enters through the one at x = 0 (a mesh is not a particle) and the run completes.
 TEST(LiggghtsGuardRunner, WalledChannelEndsAreInTheSceneAndTheHullPassesThem) {

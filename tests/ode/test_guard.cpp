@@ -127,6 +127,25 @@ TEST_F(OdeGuard, HullOverlapAboveTheCaseThreshold) {
   EXPECT_GT(step, 0);
 }
 
+#ifdef BRASH_POST_EXE
+// A run that ends before the bow reaches the ice (the hull 12 cm further back than in the smoke case, 0.05 s): the
+// record holds only zero forces, and brash-post says the hull met no ice instead of a resistance of 0 +- 0 N.
+TEST_F(OdeGuard, RunEndingBeforeTheBowReachesTheIceMetNoIce) {
+  const auto dir = make_case("met_no_ice", "start_x_m: -7.03", "start_x_m: -7.15", "");
+  const Result r = run(dir, "0.05");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const fs::path log = dir.parent_path() / "post.log";
+  const std::string post = std::string("'") + BRASH_POST_EXE + "' '" + r.run.string() +
+                           "' --no-plots --no-paraview > '" + log.string() + "' 2>&1";
+  ASSERT_EQ(std::system(post.c_str()), 0) << slurp(log);
+  const auto report = nlohmann::json::parse(slurp(r.run / "report.json"), nullptr, false);
+  ASSERT_TRUE(report.is_object()) << slurp(log);
+  EXPECT_EQ(report.value("met_no_ice", false), true) << report.dump(2);
+  EXPECT_TRUE(report["resistance_model_N"].is_null()) << report.dump(2);
+  EXPECT_NE(slurp(log).find("the hull met no ice in the window"), std::string::npos) << slurp(log);
+}
+#endif
+
 TEST_F(OdeGuard, RunawayKineticEnergy) {
   // Explicit added mass with the text's Ca_z = 2 on reversal: m_a / m = 2.2 > 1 diverges (docs/stability.md);
   // ke_max is the largest piece (40.25 mm) at 5 m/s.

@@ -10,6 +10,7 @@
 
 #include <brash/error.hpp>
 #include <brash/post/csv.hpp>
+#include <brash/post/plots.hpp>
 #include <brash/post/report.hpp>
 
 #include "synthetic_run.hpp"
@@ -178,6 +179,49 @@ TEST(RunDir, ResistanceRisingThroughTheWindowIsFlagged) {
   EXPECT_NE(j["notes"].dump().find("not stationary over the window"), std::string::npos) << j["notes"];
   const std::string text = brash::post::read_text_file(dir / "report.md");
   EXPECT_NE(text.find("**the record drifts**"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+// A hull that meets no ice in the window (a short run, a window before the bow reaches the channel) records only
+// zero forces there: the report says so and shows no resistance (not 0 ± 0 N), nor a comparison with the
+// published value; the same whether the record has no contact at all or contacts only outside the window.
+TEST(RunDir, HullThatMetNoIceInTheWindowHasNoResistance) {
+  const auto dir = scratch("no_ice");
+  SyntheticRun r;
+  write_synthetic_run(dir, r);
+  EXPECT_FALSE(run_cli(dir)["met_no_ice"].get<bool>());
+  std::ofstream(dir / "case.yaml", std::ios::app) << "references:\n  source: \"Test source\"\n"
+                                                      "  resistance_full_kN: {added_mass: 40.0}\n";
+  for (const double contact_until_s : {0.0, 10.0}) {  // no contact at all; contacts at 2-10 s, before the window
+    std::string csv = "t_s,fx_N,fy_N,fz_N\n";
+    for (std::size_t i = 0; i < r.t_s.size(); ++i)
+      csv += r.t_s[i] > 1.995 && r.t_s[i] < contact_until_s ? fmt::format("{},-1.5,0.1,-0.2\n", r.t_s[i]) : fmt::format("{},0,0,0\n", r.t_s[i]);
+    brash::post::testing::write_text(dir / "hull_force.csv", csv);
+    const auto j = run_cli(dir);
+    const std::string notes = j["notes"].dump();
+    EXPECT_TRUE(j["met_no_ice"].get<bool>()) << contact_until_s;
+    EXPECT_TRUE(j["resistance_model_N"].is_null()) << j["resistance_model_N"];
+    EXPECT_TRUE(j["resistance_full_kN"].is_null());
+    EXPECT_TRUE(j["resistance_full_ci95_kN"].is_null());
+    EXPECT_TRUE(j["ratio_fsicr_to_sim"].is_null());
+    EXPECT_TRUE(j["reference"]["resistance_over_reference"].is_null());
+    EXPECT_NE(notes.find("met NO ICE in the averaging window [15.000, 40.000] s"), std::string::npos) << notes;
+    EXPECT_NE(notes.find(contact_until_s > 0 ? "first contact is at t = 2.000 s" : "touches no ice anywhere"),
+              std::string::npos) << notes;
+    EXPECT_EQ(notes.find("no plateau"), std::string::npos) << notes;
+    const std::string md = brash::post::read_text_file(dir / "report.md");
+    EXPECT_NE(md.find("**The hull met no ice in the averaging window [15.000, 40.000] s**"), std::string::npos) << md;
+    EXPECT_EQ(md.find("mean resistance |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| met no ice | 40 kN |"), std::string::npos) << md;
+    const std::string printed = brash::post::read_text_file(dir / "cli.log");
+    EXPECT_NE(printed.find("the hull met no ice in the window [15.000, 40.000] s: no resistance"), std::string::npos)
+        << printed;
+    EXPECT_EQ(printed.find("resistance 0.0000"), std::string::npos) << printed;
+    const auto row = compare_row(analyze_run(dir));
+    EXPECT_NE(compare_markdown({row}).find("| met no ice | met no ice |"), std::string::npos) << compare_markdown({row});
+    EXPECT_EQ(compare_markdown({row}).find("Published resistance"), std::string::npos);
+    EXPECT_NE(compare_csv({row}).find(",0.482,,,,,"), std::string::npos) << compare_csv({row});
+  }
   fs::remove_all(dir);
 }
 

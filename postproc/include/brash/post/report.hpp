@@ -60,6 +60,9 @@ struct RunAnalysis {
   std::vector<RecordGap> gaps;  // stretches of the window with no record (record_gaps)
   stats::BlockingResult resistance;  // of -fx, model scale [N]
   stats::BlockingResult fx, fy, fz;  // force components of the ice on the hull [N]
+  // Every force sample of the window is zero: the record holds contact forces only, so the hull touched no ice
+  // there and there is no resistance to report (resistance and its full-scale value are not shown).
+  bool met_no_ice = false;
   std::optional<stats::HalvesTrend> resistance_trend;  // the window's two halves (>= kMinTrendSamples samples)
   double resistance_full_kN = 0, resistance_full_ci95_kN = 0;
   FsicrSummary fsicr;
