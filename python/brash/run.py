@@ -157,7 +157,8 @@ class Run:
         return self._read_csv(INDEX_FILE, INDEX_COLUMNS, "the index of the particle snapshots")
 
     def snapshot(self, step: int | None = None, *, index: int | None = None) -> pd.DataFrame:
-        """One particle snapshot as a DataFrame (id, x, y, z, radius, vx, vy, vz, submerged_fraction, ca_*).
+        """One particle snapshot as a DataFrame (id, x, y, z, radius, vx, vy, vz, submerged_fraction, ca_*, and
+        active where the engine writes it: 1 integrated, 0 idle far-field ice).
 
         run.snapshot(1200) is the snapshot of step 1200; run.snapshot(index=-1) the last one. The frame's
         attrs hold step, t_s and hull_x_m of that snapshot.
