@@ -278,6 +278,26 @@ void note_references_dropped(const fs::path& from, const std::vector<std::string
                            from.string(), fmt::join(keys, ", "));
 }
 
+// The template's ice at a new scale (k = old lambda / new lambda): thickness, piece size and its sd scaled by k, so
+// the brash is as thick and its pieces as large at full scale as the template's; --thickness, --diameter and
+// --diameter-sd, applied afterwards, still win. The time step follows the pieces (x k): the same fraction of the
+// smallest piece's Rayleigh time, which is proportional to its size.
+void scale_ice(YAML::Node& n, const brash::Case& base, double k, double lambda, bool note) {
+  const brash::IceSpec& ice = base.ice;
+  n["ice"]["thickness_m"] = text(ice.thickness_m * k);
+  n["ice"]["diameter_mean_m"] = text(ice.diameter_mean_m * k);
+  n["ice"]["diameter_sd_m"] = text(ice.diameter_sd_m * k);
+  n["run"]["timestep_s"] = text(base.run.timestep_s * k);
+  if (note)
+    std::cerr << fmt::format("brash-case: note: the ice scaled by Froude like the hull (x {:.4g}): {:.4g} m "
+                             "thick, pieces {:.4g} m (sd {:.4g} m), time step {:.4g} s; at full scale (1:{:g}) "
+                             "{:.3g} m thick with {:.3g} m pieces, as the template's (--thickness, --diameter to "
+                             "choose other ice)\n",
+                             k, ice.thickness_m * k, ice.diameter_mean_m * k, ice.diameter_sd_m * k,
+                             base.run.timestep_s * k, lambda, ice.thickness_m * k * lambda,
+                             ice.diameter_mean_m * k * lambda);
+}
+
 // ---- brash-case new -----------------------------------------------------------------------------------------------
 
 struct NewCaseOptions {
@@ -326,8 +346,9 @@ int make_case(const NewCaseOptions& o) {
                      : own ? fmt::format("made by brash-case from {} with the hull {}", templ.filename().string(),
                                          own->source.filename().string())
                            : fmt::format("made by brash-case from {}", templ.filename().string());
-  // New scale: hull dimensions and (unless given) speed follow Froude similarity from the template (the user's
-  // hull keeps its measured dimensions; the speed keeps the template's full-scale speed).
+  // New scale: hull dimensions, the ice and (unless given) speed follow Froude similarity from the template (the
+  // user's hull keeps its measured dimensions; the speed keeps the template's full-scale speed, the ice its
+  // full-scale thickness and piece size, which FSICR's R_CH and the comparison with it assume).
   if (o.scale) {
     const double old_lambda = number_at(n, "ship", "scale_lambda", 28.5);
     const double k = old_lambda / *o.scale;
@@ -336,6 +357,7 @@ int make_case(const NewCaseOptions& o) {
         if (n["hull"][key].IsDefined()) n["hull"][key] = text(n["hull"][key].as<double>() * k);
     n["ship"]["scale_lambda"] = text(*o.scale);
     if (!o.speed) n["ship"]["speed_m_s"] = text(number_at(n, "ship", "speed_m_s", 0.482) * std::sqrt(k));
+    scale_ice(n, base, k, *o.scale, !o.thickness && !o.diameter);
     if (!own)
       std::cerr << fmt::format("brash-case: note: hull dimensions scaled by {:.4g}; hull.file still names {} "
                                "-- generate the hull at 1:{} with the hull tool and point hull.file at it\n",
@@ -500,7 +522,8 @@ int main(int argc, char** argv) {
   nw->add_option("--template", o.templ, "template case.yaml (default: the paper case cases/jbc_ia_5kn)");
   nw->add_option("--description", o.description, "free text");
   nw->add_option("--speed", o.speed, "ship speed [m/s] (model scale)");
-  nw->add_option("--scale", o.scale, "scale lambda (hull dimensions and speed scaled from the template by Froude)");
+  nw->add_option("--scale", o.scale, "scale lambda (hull dimensions, speed and ice scaled from the template by "
+                                   "Froude)");
   nw->add_option("--ice-class", o.ice_class, "IA_super | IA | IB | IC");
   nw->add_option("--length", o.length, "channel length [m]");
   nw->add_option("--width", o.width, "channel width [m]");

@@ -159,6 +159,31 @@ TEST(BrashCase, NewCaseFromParameters) {
   EXPECT_NEAR(s.ship.speed_m_s, 0.482 * std::sqrt(28.5 / 40), 1e-9);
 }
 
+// --scale moves the ice with the hull by Froude similarity (thickness, piece size and its sd by old / new lambda):
+// at full scale the brash is as thick as the template's, the thickness FSICR's R_CH assumes for the ice class.
+TEST(BrashCase, NewScaleScalesTheIceByFroude) {
+  const fs::path dir = temp_dir("scale_ice");
+  const brash::Case paper = brash::load_case(kRepo / "cases/jbc_ia_5kn/case.yaml");
+  ASSERT_EQ(paper.ship.scale_lambda, 28.5);
+  ASSERT_EQ(run((kBin / "brash-case").string() + " new s50 --cases-dir " + dir.string() + " --scale 50",
+                dir / "log.txt"), 0) << slurp(dir / "log.txt");
+  const brash::Case s = brash::load_case(dir / "s50/case.yaml");
+  const double k = 28.5 / 50;
+  EXPECT_NEAR(s.ice.thickness_m, paper.ice.thickness_m * k, 1e-12);
+  EXPECT_NEAR(s.ice.diameter_mean_m, paper.ice.diameter_mean_m * k, 1e-12);
+  EXPECT_NEAR(s.ice.diameter_sd_m, paper.ice.diameter_sd_m * k, 1e-12);
+  EXPECT_NEAR(s.ice.thickness_m * s.ship.scale_lambda, paper.ice.thickness_m * paper.ship.scale_lambda, 1e-9);
+  EXPECT_NEAR(s.run.timestep_s, paper.run.timestep_s * k, 1e-15);  // the same fraction of the pieces' Rayleigh time
+  EXPECT_NE(slurp(dir / "log.txt").find("the ice scaled by Froude"), std::string::npos) << slurp(dir / "log.txt");
+  // ice given on the command line wins
+  ASSERT_EQ(run((kBin / "brash-case").string() + " new t50 --cases-dir " + dir.string() +
+                    " --scale 50 --thickness 0.03 --diameter 0.012",
+                dir / "log2.txt"), 0) << slurp(dir / "log2.txt");
+  const brash::Case t = brash::load_case(dir / "t50/case.yaml");
+  EXPECT_DOUBLE_EQ(t.ice.thickness_m, 0.03);
+  EXPECT_DOUBLE_EQ(t.ice.diameter_mean_m, 0.012);
+}
+
 TEST(BrashCase, InvalidValueLeavesNoFolder) {
   const fs::path dir = temp_dir("bad");
   EXPECT_EQ(run((kBin / "brash-case").string() + " new bad --cases-dir " + dir.string() + " --fluid-model potential",
