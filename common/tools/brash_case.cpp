@@ -25,6 +25,7 @@
 #include <optional>
 #include <regex>
 #include <sstream>
+#include <utility>
 
 #include "brash/case.hpp"
 #include "brash/case_derive.hpp"
@@ -250,6 +251,13 @@ void print_own_hull(const OwnHull& h, double lambda) {
       lambda, p.L_m * lambda, p.B_m * lambda, p.T_m * lambda, p.alpha_deg, p.phi1_deg,
       h.fsicr.bulbous_bow ? " (bulbous bow)" : "", p.phi2_deg, p.psi_deg, p.L_par_m * lambda, p.L_bow_m * lambda,
       p.A_wf_m2 * lambda * lambda);
+  for (const auto& [name, deg] : {std::pair{"alpha", p.alpha_deg}, std::pair{"phi1", p.phi1_deg},
+                                   std::pair{"phi2", p.phi2_deg}, std::pair{"psi", p.psi_deg}})
+    if (!(deg > 0 && deg <= 90))  // FSICR's angles lie in (0, 90]: outside, the measurement found no bow
+      std::cerr << fmt::format("brash-case: warning: FSICR angle {} = {:.1f} deg is outside the valid range (0, 90] "
+                               "deg: at the draft {:.4g} m the waterline does not cut a bow FSICR can take; reports "
+                               "give no R_CH unless the case's fsicr: section sets {}_deg (docs/case_format.md)\n",
+                               name, deg, h.draft_m, name);
   if (!(p.L_bow_m > 0) || !(p.A_wf_m2 > 0))
     std::cerr << fmt::format("brash-case: note: this hull has no bow the FSICR formula can take (L_bow {:.3g} m, A_wf "
                              "{:.3g} m^2): reports will give the resistance without FSICR R_CH unless the case's "
