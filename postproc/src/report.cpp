@@ -232,7 +232,11 @@ RunAnalysis analyze_run(const std::filesystem::path& run_dir) {
   if (!a.resistance.plateau_found)
     a.notes.push_back("block averaging found no plateau of the variance of the mean: the CI95 is a lower bound "
                       "(window too short for the signal's correlation time)");
-  if (w.i1 - w.i0 >= kMinTrendSamples) {
+  if (w.i1 - w.i0 < kMinTrendSamples) {
+    a.notes.push_back(fmt::format("the window holds {} samples: too few to check whether the resistance drifts "
+                                  "(its two halves need {} at least); the mean may depend on where the window ends",
+                                  w.i1 - w.i0, kMinTrendSamples));
+  } else {  // short windows too: a ramp over a short run is the drift most worth flagging
     const auto& t = *(a.resistance_trend = stats::halves_trend(resistance_N));
     if (t.drifts())
       a.notes.push_back(fmt::format(

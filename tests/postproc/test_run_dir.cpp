@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <regex>
 
 #include <nlohmann/json.hpp>
 
@@ -222,6 +223,42 @@ TEST(RunDir, HullThatMetNoIceInTheWindowHasNoResistance) {
     EXPECT_EQ(compare_markdown({row}).find("Published resistance"), std::string::npos);
     EXPECT_NE(compare_csv({row}).find(",0.482,,,,,"), std::string::npos) << compare_csv({row});
   }
+  fs::remove_all(dir);
+}
+
+// The drift check runs on every window, short ones too: a 1 s run whose resistance ramps from 0.3 to 1.4 N is
+// flagged (its mean, ~0.85 N, depends on where the window ends), a flat one of the same length is not, and a window
+// too short for two halves says that it could not be checked.
+TEST(RunDir, ShortRampIsFlaggedAsDrifting) {
+  const auto dir = scratch("short_ramp");
+  SyntheticRun r;
+  write_synthetic_run(dir, r);
+  brash::post::testing::write_text(dir / "case.yaml", std::regex_replace(brash::post::testing::synthetic_case_yaml(1.0),
+                                                                         std::regex("window_s: \\[15.0,"),
+                                                                         "window_s: [0.0,"));
+  const auto record = [&](double slope_N_per_s) {
+    std::string csv = "t_s,fx_N,fy_N,fz_N\n";
+    for (int i = 0; i <= 100; ++i) {
+      const double t = 0.01 * i, wiggle = i % 2 ? 0.05 : -0.05;
+      csv += fmt::format("{},{},0.01,-0.02\n", t, -(0.3 + slope_N_per_s * t + wiggle));
+    }
+    brash::post::testing::write_text(dir / "hull_force.csv", csv);
+    return run_cli(dir);
+  };
+  const auto ramp = record(1.1);
+  ASSERT_TRUE(ramp["resistance_model_N"].contains("window_halves")) << ramp.dump(2);
+  EXPECT_TRUE(ramp["resistance_model_N"]["window_halves"]["drifts"].get<bool>()) << ramp.dump(2);
+  EXPECT_NEAR(ramp["resistance_model_N"]["window_halves"]["difference"].get<double>(), 0.55, 0.02);
+  EXPECT_NE(ramp["notes"].dump().find("not stationary over the window"), std::string::npos) << ramp["notes"];
+  EXPECT_NE(brash::post::read_text_file(dir / "report.md").find("**the record drifts**"), std::string::npos);
+  const auto flat = record(0.0);
+  EXPECT_FALSE(flat["resistance_model_N"]["window_halves"]["drifts"].get<bool>()) << flat.dump(2);
+  EXPECT_EQ(flat["notes"].dump().find("not stationary"), std::string::npos) << flat["notes"];
+  brash::post::testing::write_text(dir / "hull_force.csv", "t_s,fx_N,fy_N,fz_N\n0,-0.3,0,0\n0.5,-0.8,0,0\n1,-1.4,0,0\n");
+  const auto three = run_cli(dir);
+  EXPECT_FALSE(three["resistance_model_N"].contains("window_halves"));
+  EXPECT_NE(three["notes"].dump().find("the window holds 3 samples: too few to check whether the resistance drifts"),
+            std::string::npos) << three["notes"];
   fs::remove_all(dir);
 }
 

@@ -72,8 +72,9 @@ struct RunAnalysis {
   std::vector<std::string> notes;  // everything a reader must know (truncation, fallbacks, ...)
 };
 
-// Fewest window samples for the stationarity check (each half then has >= 2 x kDefaultMinBlocks samples).
-inline constexpr std::size_t kMinTrendSamples = 64;
+// Fewest window samples for the stationarity check, made on every window that has them: two per half, so that each
+// half has a mean and a spread (stats::halves_trend).
+inline constexpr std::size_t kMinTrendSamples = 4;
 
 RunAnalysis analyze_run(const std::filesystem::path& run_dir);
 
