@@ -5,7 +5,9 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <array>
 #include <fstream>
+#include <iterator>
 #include <optional>
 #include <set>
 #include <tuple>
@@ -92,6 +94,43 @@ void fix_paths(YAML::Node root, const Case& base, const fs::path& base_dir, cons
         same_packing_inputs(base, derived) ? base.ice.packing_file.string() : std::string("generated/packing.csv");
 }
 
+// Keys of how a run is computed, not of the hull, speed, ice or fluid it computes: a variant that changes only
+// these still describes its base's published references (a key ending in '.' stands for its whole section).
+constexpr std::array<std::string_view, 16> kKeysKeepingReferences{
+    "name",          "description",          "run.",           "speedups.",       "guards.",
+    "fsicr.",        "references.",          "contact.youngs_modulus_pa",         "fluid.model",
+    "fluid.treatment", "hull.band_m",        "hull.start_x_m", "ice.seed",        "ice.settle",
+    "ice.settle_speed_m_s", "ice.packing_file"};
+
+bool keeps_references(std::string_view key) {
+  return std::ranges::any_of(kKeysKeepingReferences,
+                             [&](std::string_view k) { return k.ends_with('.') ? key.starts_with(k) : key == k; });
+}
+
+// The dotted keys under which two YAML mappings differ (a key on one side only counts), into `out`.
+void differing_keys(const YAML::Node& a, const YAML::Node& b, const std::string& prefix, std::set<std::string>& out) {
+  std::set<std::string> names;
+  for (const YAML::Node* side : {&a, &b})
+    if (side->IsMap())
+      for (const auto& kv : *side) names.insert(kv.first.Scalar());
+  for (const auto& name : names) {
+    const YAML::Node x = a.IsMap() ? a[name] : YAML::Node(YAML::NodeType::Undefined);
+    const YAML::Node y = b.IsMap() ? b[name] : YAML::Node(YAML::NodeType::Undefined);
+    if (!x.IsDefined() || !y.IsDefined())  // (a key missing on one side is an invalid node there: ask nothing more)
+      out.insert(prefix + name);
+    else if (x.IsMap() && y.IsMap())
+      differing_keys(x, y, prefix + name + ".", out);
+    else if (YAML::Dump(x) != YAML::Dump(y))
+      out.insert(prefix + name);
+  }
+}
+
+bool sets_references(const CaseOverrides& overrides) {
+  return std::ranges::any_of(overrides, [](const CaseOverride& o) {
+    return o.first == "references" || o.first.starts_with("references.");
+  });
+}
+
 std::string emit(const YAML::Node& root) {
   YAML::Emitter e;
   e << root;
@@ -130,6 +169,14 @@ bool same_packing_inputs(const Case& a, const Case& b) {
   return inputs(a) == inputs(b);
 }
 
+std::vector<std::string> keys_beyond_references(const Case& base, const Case& variant) {
+  std::set<std::string> changed;
+  differing_keys(YAML::Load(dump_case_yaml(base)), YAML::Load(dump_case_yaml(variant)), "", changed);
+  std::vector<std::string> keys;
+  std::ranges::copy_if(changed, std::back_inserter(keys), [](const std::string& k) { return !keeps_references(k); });
+  return keys;
+}
+
 std::string derive_case(const fs::path& base_case_file, const CaseOverrides& overrides) {
   // a new fluid.model may be what makes the base's other fluid keys valid (a hull-flow case run with drag): the
   // model checks wait for the derived case
@@ -146,7 +193,9 @@ std::string derive_case(const fs::path& base_case_file, const CaseOverrides& ove
   const std::string header = fmt::format("# Derived by brash-case from {} with: {} (keys: docs/case_format.md)\n",
                                          fs::absolute(base_case_file).lexically_normal().string(), describe(overrides));
   const std::string source = fmt::format("derived case ({} with {})", base_name, describe(overrides));
-  fix_paths(root, base, base_dir, overrides, parse_case(header + emit(root), base_dir, source));
+  const Case variant = parse_case(header + emit(root), base_dir, source);
+  fix_paths(root, base, base_dir, overrides, variant);
+  if (!sets_references(overrides) && !keys_beyond_references(base, variant).empty()) root.remove("references");
   const std::string text = header + emit(root);
   (void)parse_case(text, base_dir, source);
   return text;

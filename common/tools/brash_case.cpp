@@ -25,6 +25,7 @@
 #include <optional>
 #include <regex>
 #include <sstream>
+#include <utility>
 
 #include "brash/case.hpp"
 #include "brash/case_derive.hpp"
@@ -182,6 +183,13 @@ void print_own_hull(const OwnHull& h, double lambda) {
       lambda, p.L_m * lambda, p.B_m * lambda, p.T_m * lambda, p.alpha_deg, p.phi1_deg,
       h.fsicr.bulbous_bow ? " (bulbous bow)" : "", p.phi2_deg, p.psi_deg, p.L_par_m * lambda, p.L_bow_m * lambda,
       p.A_wf_m2 * lambda * lambda);
+  for (const auto& [name, deg] : {std::pair{"alpha", p.alpha_deg}, std::pair{"phi1", p.phi1_deg},
+                                   std::pair{"phi2", p.phi2_deg}, std::pair{"psi", p.psi_deg}})
+    if (!(deg > 0 && deg <= 90))  // FSICR's angles lie in (0, 90]: outside, the measurement found no bow
+      std::cerr << fmt::format("brash-case: warning: FSICR angle {} = {:.1f} deg is outside the valid range (0, 90] "
+                               "deg: at the draft {:.4g} m the waterline does not cut a bow FSICR can take; reports "
+                               "give no R_CH unless the case's fsicr: section sets {}_deg (docs/case_format.md)\n",
+                               name, deg, h.draft_m, name);
   if (!(p.L_bow_m > 0) || !(p.A_wf_m2 > 0))
     std::cerr << fmt::format("brash-case: note: this hull has no bow the FSICR formula can take (L_bow {:.3g} m, A_wf "
                              "{:.3g} m^2): reports will give the resistance without FSICR R_CH unless the case's "
@@ -199,6 +207,35 @@ double bow_gap_over_lpp(const brash::Case& base) {
   }
   const double gap = -(base.hull.start_x_m + x_max) / base.hull.lpp_m;
   return gap > 0 ? gap : 0.01;
+}
+
+// The template's (or base's) published references describe another hull, speed, ice or fluid than the new case:
+// they were left out (brash::keys_beyond_references).
+void note_references_dropped(const fs::path& from, const std::vector<std::string>& keys) {
+  std::cerr << fmt::format("brash-case: note: the published references of {} (references:) are not carried over: "
+                           "they describe its hull, speed, ice and fluid, and {} changed (docs/case_format.md "
+                           "\"references\")\n",
+                           from.string(), fmt::join(keys, ", "));
+}
+
+// The template's ice at a new scale (k = old lambda / new lambda): thickness, piece size and its sd scaled by k, so
+// the brash is as thick and its pieces as large at full scale as the template's; --thickness, --diameter and
+// --diameter-sd, applied afterwards, still win. The time step follows the pieces (x k): the same fraction of the
+// smallest piece's Rayleigh time, which is proportional to its size.
+void scale_ice(YAML::Node& n, const brash::Case& base, double k, double lambda, bool note) {
+  const brash::IceSpec& ice = base.ice;
+  n["ice"]["thickness_m"] = text(ice.thickness_m * k);
+  n["ice"]["diameter_mean_m"] = text(ice.diameter_mean_m * k);
+  n["ice"]["diameter_sd_m"] = text(ice.diameter_sd_m * k);
+  n["run"]["timestep_s"] = text(base.run.timestep_s * k);
+  if (note)
+    std::cerr << fmt::format("brash-case: note: the ice scaled by Froude like the hull (x {:.4g}): {:.4g} m "
+                             "thick, pieces {:.4g} m (sd {:.4g} m), time step {:.4g} s; at full scale (1:{:g}) "
+                             "{:.3g} m thick with {:.3g} m pieces, as the template's (--thickness, --diameter to "
+                             "choose other ice)\n",
+                             k, ice.thickness_m * k, ice.diameter_mean_m * k, ice.diameter_sd_m * k,
+                             base.run.timestep_s * k, lambda, ice.thickness_m * k * lambda,
+                             ice.diameter_mean_m * k * lambda);
 }
 
 // ---- brash-case new -----------------------------------------------------------------------------------------------
@@ -249,8 +286,9 @@ int make_case(const NewCaseOptions& o) {
                      : own ? fmt::format("made by brash-case from {} with the hull {}", templ.filename().string(),
                                          own->source.filename().string())
                            : fmt::format("made by brash-case from {}", templ.filename().string());
-  // New scale: hull dimensions and (unless given) speed follow Froude similarity from the template (the user's
-  // hull keeps its measured dimensions; the speed keeps the template's full-scale speed).
+  // New scale: hull dimensions, the ice and (unless given) speed follow Froude similarity from the template (the
+  // user's hull keeps its measured dimensions; the speed keeps the template's full-scale speed, the ice its
+  // full-scale thickness and piece size, which FSICR's R_CH and the comparison with it assume).
   if (o.scale) {
     const double old_lambda = number_at(n, "ship", "scale_lambda", 28.5);
     const double k = old_lambda / *o.scale;
@@ -259,6 +297,7 @@ int make_case(const NewCaseOptions& o) {
         if (n["hull"][key].IsDefined()) n["hull"][key] = text(n["hull"][key].as<double>() * k);
     n["ship"]["scale_lambda"] = text(*o.scale);
     if (!o.speed) n["ship"]["speed_m_s"] = text(number_at(n, "ship", "speed_m_s", 0.482) * std::sqrt(k));
+    scale_ice(n, base, k, *o.scale, !o.thickness && !o.diameter);
     if (!own)
       std::cerr << fmt::format("brash-case: note: hull dimensions scaled by {:.4g}; hull.file still names {} "
                                "-- generate the hull at 1:{} with the hull tool and point hull.file at it\n",
@@ -344,15 +383,22 @@ int make_case(const NewCaseOptions& o) {
     }
   }
   fs::create_directories(dir);
-  YAML::Emitter e;
-  e << n;
-  {
+  const auto write = [&] {
+    YAML::Emitter e;
+    e << n;
     std::ofstream out(file);
     out << "# Made by brash-case from " << templ.string() << " (keys: docs/case_format.md).\n" << e.c_str() << "\n";
     if (!out) throw brash::InputError(file.string() + ": cannot write");
-  }
+  };
   try {
-    const brash::Case c = brash::load_case(file);
+    write();
+    brash::Case c = brash::load_case(file);
+    if (const auto keys = brash::keys_beyond_references(base, c); base.references.declared() && !keys.empty()) {
+      n.remove("references");
+      write();
+      c = brash::load_case(file);
+      note_references_dropped(templ, keys);
+    }
     if (own) print_own_hull(*own, c.ship.scale_lambda);
     std::cout << fmt::format("brash-case: wrote {} (speed {} m/s, channel {} x {} m, d {} m, fluid {}{})\n",
                              file.string(), c.ship.speed_m_s, c.channel.length_m, c.channel.width_m,
@@ -382,7 +428,10 @@ int derive(const DeriveOptions& o) {
   for (const auto& s : o.sets) overrides.push_back(brash::parse_case_override(s));
   const fs::path base = case_file_of(o.base);
   const brash::Case c = brash::write_derived_case(base, overrides, o.out, o.force);
-  const char* note = brash::same_packing_inputs(c, brash::load_case(base))
+  const brash::Case base_case = brash::load_case(base);
+  if (base_case.references.declared() && !c.references.declared())
+    note_references_dropped(base, brash::keys_beyond_references(base_case, c));
+  const char* note = brash::same_packing_inputs(c, base_case)
                          ? " (the base's)"
                          : " (its own ice: generated when a run starts, or by brash-pack)";
   std::cout << fmt::format("brash-case: wrote {} from {}; packing {}{}\n", (fs::path(o.out) / "case.yaml").string(),
@@ -413,7 +462,8 @@ int main(int argc, char** argv) {
   nw->add_option("--template", o.templ, "template case.yaml (default: the paper case cases/jbc_ia_5kn)");
   nw->add_option("--description", o.description, "free text");
   nw->add_option("--speed", o.speed, "ship speed [m/s] (model scale)");
-  nw->add_option("--scale", o.scale, "scale lambda (hull dimensions and speed scaled from the template by Froude)");
+  nw->add_option("--scale", o.scale, "scale lambda (hull dimensions, speed and ice scaled from the template by "
+                                   "Froude)");
   nw->add_option("--ice-class", o.ice_class, "IA_super | IA | IB | IC");
   nw->add_option("--length", o.length, "channel length [m]");
   nw->add_option("--width", o.width, "channel width [m]");

@@ -110,7 +110,10 @@ FsicrDetail measure_fsicr_detail(const Mesh& mesh, double draft_m, double lpp_m)
   double x_fwd_below = -std::numeric_limits<double>::infinity();
   for (const auto& v : mesh.vertices)
     if (v.z() < T - dz) x_fwd_below = std::max(x_fwd_below, v.x());
-  d.bulbous_bow = x_fwd_below > d.x_stem_m + 0.01 * lpp_m;  // FSICR: bulbous bow -> phi1 = 90
+  // FSICR: bulbous bow -> phi1 = 90. A bulb is a point below T ahead of the stem at T or, at a draft whose
+  // waterline cuts the bulb, a stem that recedes going up (geometric phi1 > 90 deg: no stem does that but the top
+  // of a bulb).
+  d.bulbous_bow = x_fwd_below > d.x_stem_m + 0.01 * lpp_m || d.phi1_geometric_deg > 90;
   p.phi1_deg = d.bulbous_bow ? 90.0 : d.phi1_geometric_deg;
   p.psi_deg = std::atan(std::tan(p.phi2_deg / kDeg) / std::sin(p.alpha_deg / kDeg)) * kDeg;
 

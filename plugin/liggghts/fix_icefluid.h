@@ -22,7 +22,8 @@
      output_every N: fill the per-atom output only every N steps (dump interval)  [1]
 
    Must be the last POST_FORCE fix (checked at init): the implicit treatment scales the sum of every
-   other force. Per-atom output (dump f_ID[1..4]): submerged fraction, Ca_x, Ca_y, Ca_z.
+   other force. Per-atom output (dump f_ID[1..5]): submerged fraction, Ca_x, Ca_y, Ca_z, active (1 in the fix's
+   group, 0 outside it: idle far-field ice, with its real submerged fraction and Ca 0).
    Doc: plugin/liggghts/doc/fix_icefluid.txt
 */
 #pragma once
@@ -60,7 +61,7 @@ class FixIceFluid : public LAMMPS_NS::Fix {
  private:
   // Per-atom state carried across steps, migration and restart: the core kernel's layout (kernel.hpp).
   static constexpr int kStateSize = brash::core::kStateStride;
-  static constexpr int kOutputSize = brash::core::kOutputStride;  // submerged fraction, Ca x, y, z
+  static constexpr int kOutputSize = brash::core::kOutputStride;  // submerged fraction, Ca x, y, z, active
 
   void compute(bool replay);
   void parse(int narg, char** arg);

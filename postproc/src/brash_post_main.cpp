@@ -143,8 +143,12 @@ int run_report(const fs::path& run_dir, const ReportOptions& opt) {
   brash::run::write_atomic(run_dir / "report.md", report_markdown(a));
   brash::run::write_atomic(run_dir / "force_history.csv", force_history_csv(a));
   brash::run::write_atomic(run_dir / "blocking.csv", blocking_csv(a.resistance));
-  fmt::print("{}: resistance {:.4f} ± {:.4f} N model, {:.1f} ± {:.1f} kN full scale",
-             run_dir.string(), a.resistance.mean, a.resistance.ci95, a.resistance_full_kN, a.resistance_full_ci95_kN);
+  if (a.met_no_ice)
+    fmt::print("{}: the hull met no ice in the window [{:.3f}, {:.3f}] s: no resistance", run_dir.string(),
+               a.window.used_s[0], a.window.used_s[1]);
+  else
+    fmt::print("{}: resistance {:.4f} ± {:.4f} N model, {:.1f} ± {:.1f} kN full scale", run_dir.string(),
+               a.resistance.mean, a.resistance.ci95, a.resistance_full_kN, a.resistance_full_ci95_kN);
   if (a.fsicr.result) fmt::print("; FSICR R_CH {:.1f} kN", a.fsicr.result->R_CH_N / 1000);
   fmt::print("\n");
   for (const auto& n : a.notes) fmt::print("note: {}\n", n);
@@ -203,6 +207,8 @@ std::pair<double, double> report_resistance(const fs::path& run_dir) {
   const auto j = nlohmann::json::parse(std::ifstream(file), nullptr, false);
   if (j.is_discarded() || !j.contains("resistance_model_N"))
     throw brash::InputError(file.string() + ": no report (run brash-post " + run_dir.string() + " first)");
+  if (j.value("met_no_ice", false))
+    throw brash::InputError(file.string() + ": the hull met no ice in the run's window: it has no resistance");
   const auto& r = j["resistance_model_N"];
   const double nan = std::numeric_limits<double>::quiet_NaN();  // (a float NAN default would read floats)
   return {r.value("mean", nan), r.value("ci95", nan)};

@@ -68,6 +68,11 @@ void write_particles(const Snapshot& s, const fs::path& path) {
   for (vtkDataArray* a : {static_cast<vtkDataArray*>(radius), static_cast<vtkDataArray*>(vel),
                           static_cast<vtkDataArray*>(sub), static_cast<vtkDataArray*>(ca), static_cast<vtkDataArray*>(id)})
     g->GetPointData()->AddArray(a);
+  if (!s.active.empty()) {  // 1 integrated, 0 idle far-field ice (files without the column: no field)
+    auto active = array("active", 1, n);
+    for (std::size_t i = 0; i < n; ++i) active->SetValue(static_cast<vtkIdType>(i), s.active[i]);
+    g->GetPointData()->AddArray(active);
+  }
   g->GetPointData()->SetActiveScalars("radius");
   write_grid(g, path);
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <span>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -36,18 +37,28 @@ std::vector<SnapshotEntry> read_snapshot_index(const std::filesystem::path& dir,
 }
 
 Snapshot read_snapshot(const std::filesystem::path& path, bool run_in_progress) {
-  static constexpr std::array<std::string_view, 12> kHeader{
-      "id", "x", "y", "z", "radius", "vx", "vy", "vz", "submerged_fraction", "ca_x", "ca_y", "ca_z"};
+  // YADE's files and those of older runs end at ca_z; LIGGGHTS' and ODE's have the active column
+  static constexpr std::array<std::string_view, 13> kHeader{
+      "id", "x", "y", "z", "radius", "vx", "vy", "vz", "submerged_fraction", "ca_x", "ca_y", "ca_z", "active"};
   const auto text = read_text_file(path);
+  const auto first_line = text.substr(0, text.find('\n'));
+  const bool with_active = first_line.ends_with(",active") || first_line.ends_with(",active\r");
+  const auto header = std::span(kHeader).first(with_active ? 13 : 12);
   Snapshot s;
   std::array<std::vector<double>*, 11> cols{&s.x, &s.y, &s.z, &s.radius, &s.vx, &s.vy, &s.vz,
                                             &s.submerged_fraction, &s.ca_x, &s.ca_y, &s.ca_z};
-  const auto scan = scan_csv(path, text, kHeader, run_in_progress, [&](std::size_t line, std::span<const std::string_view> f) {
+  const auto scan = scan_csv(path, text, header, run_in_progress, [&](std::size_t line, std::span<const std::string_view> f) {
     const double id = parse_finite(f[0], path, line, kHeader[0]);
     if (id != std::floor(id)) throw InputError(fmt::format("{}:{}: column 'id': '{}' is not an integer", path.string(), line, f[0]));
     s.id.push_back(static_cast<std::int64_t>(id));
     for (std::size_t c = 0; c < cols.size(); ++c) cols[c]->push_back(parse_finite(f[c + 1], path, line, kHeader[c + 1]));
     if (s.radius.back() <= 0) throw InputError(fmt::format("{}:{}: column 'radius': must be > 0", path.string(), line));
+    if (!with_active) return;
+    const double active = parse_finite(f[12], path, line, kHeader[12]);
+    if (active != 0 && active != 1)
+      throw InputError(fmt::format("{}:{}: column 'active': '{}' is not 0 (idle) or 1 (integrated)", path.string(),
+                                   line, f[12]));
+    s.active.push_back(static_cast<std::uint8_t>(active));
   });
   s.tail_dropped = scan.tail_dropped;
   return s;

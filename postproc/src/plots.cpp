@@ -54,6 +54,20 @@ void run_gnuplot(const fs::path& script) {
   }
 }
 
+namespace {
+
+// The window mean as a line and a label; a run whose hull met no ice has none, and the label says so.
+std::string mean_label(const RunAnalysis& a) {
+  const auto& w = a.window.used_s;
+  if (a.met_no_ice) return "set label 1 'the hull met no ice in the averaging window' at graph 0.35, graph 0.95 front";
+  return fmt::format("set arrow 1 from {}, {} to {}, {} nohead lw 2 lc rgb 'black' front\n"
+                     "set label 1 sprintf('mean resistance -fx = %.4g +- %.2g N (95 %%)', {}, {}) at graph 0.35, "
+                     "graph 0.95 front",
+                     w[0], -a.resistance.mean, w[1], -a.resistance.mean, a.resistance.mean, a.resistance.ci95);
+}
+
+}  // namespace
+
 fs::path plot_force_history(const RunAnalysis& a, const fs::path& out_dir, const fs::path& work_dir) {
   fs::create_directories(work_dir);
   const auto data = work_dir / "force_history.csv";
@@ -76,13 +90,11 @@ set ylabel 'force [N]'
 set grid
 set key top left
 set object 1 rect from {}, graph 0 to {}, graph 1 behind fc rgb '#e8e8e8' fs solid 1.0 noborder
-set arrow 1 from {}, {} to {}, {} nohead lw 2 lc rgb 'black' front
-set label 1 sprintf('mean resistance -fx = %.4g +- %.2g N (95 %%)', {}, {}) at graph 0.35, graph 0.95 front
+{}
 plot {} using 1:2 with lines lw 1 lc rgb '#c0392b' title 'x (heading): fx', \
      '' using 1:3 with lines lw 1 lc rgb '#2e86c1' title 'y: fy', \
      '' using 1:4 with lines lw 1 lc rgb '#27ae60' title 'z: fz'
-)", a.meta.engine, a.meta.fluid_model, w[0], w[1], w[0], w[1], w[0], -a.resistance.mean, w[1], -a.resistance.mean,
-                                       a.resistance.mean, a.resistance.ci95, q(data));
+)", a.meta.engine, a.meta.fluid_model, w[0], w[1], w[0], w[1], mean_label(a), q(data));
   return render(out_dir / "force_history.png", work_dir, "force_history", body, 1200, 600);
 }
 
@@ -93,8 +105,10 @@ fs::path plot_resistance_bars(const RunAnalysis& a, const fs::path& out_dir, con
   const double rch = a.fsicr.result ? a.fsicr.result->R_CH_N / 1000 : NAN;
   // columns: x label value err colour; the published values only where the case declares them
   std::vector<std::string> bars{
-      fmt::format("\"simulation\\n({} {})\" {} {} 0", a.meta.engine, model, a.resistance_full_kN, a.resistance_full_ci95_kN),
       fmt::format("\"FSICR R_CH\\n(ours, {})\" {} 0 1", a.fsicr.ice_class, std::isnan(rch) ? 0.0 : rch)};
+  if (!a.met_no_ice)  // a run whose hull met no ice has no resistance to draw
+    bars.insert(bars.begin(), fmt::format("\"simulation\\n({} {})\" {} {} 0", a.meta.engine, model,
+                                          a.resistance_full_kN, a.resistance_full_ci95_kN));
   const auto& ref = a.reference;
   if (ref && ref->resistance_full_kN)
     bars.push_back(fmt::format("\"published simulation\\n({})\" {} 0 2", model, *ref->resistance_full_kN));
@@ -184,10 +198,13 @@ CompareRow compare_row(const RunAnalysis& a) {
   r.fluid_model = run_fluid_model(a);
   if (a.reference && a.reference->resistance_full_kN) r.reference_full_kN = *a.reference->resistance_full_kN;
   r.speed_m_s = a.case_.speed_m_s;
-  r.mean_N = a.resistance.mean;
-  r.ci95_N = a.resistance.ci95;
-  r.full_kN = a.resistance_full_kN;
-  r.full_ci95_kN = a.resistance_full_ci95_kN;
+  r.met_no_ice = a.met_no_ice;
+  if (!a.met_no_ice) {  // else NaN: no resistance (compare_markdown says "met no ice", the CSV leaves it empty)
+    r.mean_N = a.resistance.mean;
+    r.ci95_N = a.resistance.ci95;
+    r.full_kN = a.resistance_full_kN;
+    r.full_ci95_kN = a.resistance_full_ci95_kN;
+  }
   if (a.fsicr.result) r.R_CH_kN = a.fsicr.result->R_CH_N / 1000;
   if (a.ratio_fsicr_to_sim) r.ratio = *a.ratio_fsicr_to_sim;
   r.complete = a.meta.status == "complete" && !a.force.tail_dropped && !a.window.truncated && !a.window.fallback;
@@ -198,24 +215,36 @@ std::string compare_markdown(const std::vector<CompareRow>& rows) {
   std::string s = "| run | engine | fluid model | speed [m/s] | R model [N] | R full [kN] | FSICR R_CH [kN] | FSICR / sim | complete |\n"
                   "|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& r : rows)
-    s += fmt::format("| {} | {} | {} | {:.3f} | {:.4f} ± {:.4f} | {:.1f} ± {:.1f} | {:.1f} | {:.2f} | {} |\n", r.run, r.engine,
-                     r.fluid_model, r.speed_m_s, r.mean_N, r.ci95_N, r.full_kN, r.full_ci95_kN, r.R_CH_kN, r.ratio,
-                     r.complete ? "yes" : "NO");
+    s += fmt::format("| {} | {} | {} | {:.3f} | {} | {} | {:.1f} | {:.2f} | {} |\n", r.run, r.engine, r.fluid_model,
+                     r.speed_m_s, r.met_no_ice ? "met no ice" : fmt::format("{:.4f} ± {:.4f}", r.mean_N, r.ci95_N),
+                     r.met_no_ice ? "met no ice" : fmt::format("{:.1f} ± {:.1f}", r.full_kN, r.full_ci95_kN),
+                     r.R_CH_kN, r.ratio, r.complete ? "yes" : "NO");
   s += "\n± = 95 % confidence interval (block averaging).\n";
   std::string refs;
   for (const auto& r : rows)
-    if (!std::isnan(r.reference_full_kN))
+    if (!std::isnan(r.reference_full_kN) && !r.met_no_ice)
       refs += fmt::format("{}{}: {:.0f} kN ({:+.1f} %)", refs.empty() ? "" : "; ", r.run, r.reference_full_kN,
                           100 * (r.full_kN / r.reference_full_kN - 1));
   if (!refs.empty()) s += "Published resistance declared by the run's case (full scale): " + refs + ".\n";
   return s;
 }
 
+namespace {
+
+// A resistance cell: empty where the run has none (its hull met no ice).
+std::string csv_value(double v) { return std::isnan(v) ? std::string() : fmt::format("{}", v); }
+
+// A value for gnuplot: NaN (not drawn) where there is none.
+std::string plot_value(double v) { return std::isnan(v) ? std::string("NaN") : fmt::format("{}", v); }
+
+}  // namespace
+
 std::string compare_csv(const std::vector<CompareRow>& rows) {
   std::string s = "run,engine,fluid_model,speed_m_s,mean_N,ci95_N,full_kN,full_ci95_kN,R_CH_kN,ratio_fsicr_to_sim,complete\n";
   for (const auto& r : rows)
-    s += fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", r.run, r.engine, r.fluid_model, r.speed_m_s, r.mean_N, r.ci95_N,
-                     r.full_kN, r.full_ci95_kN, r.R_CH_kN, r.ratio, r.complete ? 1 : 0);
+    s += fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", r.run, r.engine, r.fluid_model, r.speed_m_s,
+                     csv_value(r.mean_N), csv_value(r.ci95_N), csv_value(r.full_kN), csv_value(r.full_ci95_kN),
+                     r.R_CH_kN, r.ratio, r.complete ? 1 : 0);
   return s;
 }
 
@@ -227,8 +256,9 @@ fs::path plot_compare(const std::vector<CompareRow>& rows, const fs::path& out_d
     const auto& r = rows[i];
     // column 6: the published resistance the run's case declares, NaN (not drawn) where it declares none
     d += fmt::format("{} \"{}\\n{} {:.3f} m/s{}\" {} {} {} {}\n", i, r.engine, r.fluid_model, r.speed_m_s,
-                     r.complete ? "" : "\\n(incomplete)", r.full_kN, r.full_ci95_kN,
-                     std::isnan(r.R_CH_kN) ? 0.0 : r.R_CH_kN, std::isnan(r.reference_full_kN) ? "NaN" : fmt::format("{}", r.reference_full_kN));
+                     r.met_no_ice ? "\\n(met no ice)" : (r.complete ? "" : "\\n(incomplete)"), plot_value(r.full_kN),
+                     plot_value(r.full_ci95_kN), std::isnan(r.R_CH_kN) ? 0.0 : r.R_CH_kN,
+                     plot_value(r.reference_full_kN));
   }
   brash::run::write_atomic(data, d);
   const bool with_reference =

@@ -41,6 +41,27 @@ nlohmann::ordered_json blocking_json(const stats::BlockingResult& b) {
 
 nlohmann::ordered_json opt(const std::optional<double>& v) { return v ? nlohmann::ordered_json(*v) : nullptr; }
 
+// The record holds contact forces only: samples [i0, i1) all exactly zero mean the hull touched no ice there.
+bool no_contact(const ForceHistory& f, std::size_t i0, std::size_t i1) {
+  for (std::size_t i = i0; i < i1; ++i)
+    if (f.fx_N[i] != 0 || f.fy_N[i] != 0 || f.fz_N[i] != 0) return false;
+  return true;
+}
+
+// Why a window with no contact has no resistance, and where the record's first contact is.
+std::string met_no_ice_note(const ForceHistory& f, const WindowSelection& w) {
+  std::string first = "the hull touches no ice anywhere in the record";
+  for (std::size_t i = 0; i < f.t_s.size(); ++i)
+    if (!no_contact(f, i, i + 1)) {
+      first = fmt::format("its first contact is at t = {:.3f} s", f.t_s[i]);
+      break;
+    }
+  return fmt::format("the hull met NO ICE in the averaging window [{:.3f}, {:.3f}] s: every hull force sample there "
+                     "is zero (the record holds contact forces only), so there is no resistance to report; {} "
+                     "(run longer, or start the window after the bow reaches the ice)",
+                     w.used_s[0], w.used_s[1], first);
+}
+
 }  // namespace
 
 WindowSelection select_window(std::span<const double> t, std::array<double, 2> w, const std::filesystem::path& source) {
@@ -131,6 +152,19 @@ FsicrSummary resolve_fsicr(const PostCase& c, const std::optional<FsicrParams>& 
   return s;
 }
 
+namespace {
+
+// FSICR and the published reference: the run's hull and case, with or without a resistance to set them beside.
+void finish_analysis(RunAnalysis& a) {
+  const auto measured = measure_case_hull_full_scale(a.case_, a.notes);
+  a.fsicr = resolve_fsicr(a.case_, measured);
+  if (a.fsicr.result && !a.met_no_ice && a.resistance_full_kN > 0)
+    a.ratio_fsicr_to_sim = a.fsicr.result->R_CH_N / 1000.0 / a.resistance_full_kN;
+  a.reference = published_reference(a.case_.references, run_fluid_model(a));
+}
+
+}  // namespace
+
 RunAnalysis analyze_run(const std::filesystem::path& run_dir) {
   RunAnalysis a;
   a.run_dir = run_dir;
@@ -184,15 +218,25 @@ RunAnalysis analyze_run(const std::filesystem::path& run_dir) {
         a.gaps.size(), list, missing, 100 * missing / span, span - missing));
   }
 
+  a.met_no_ice = no_contact(a.force, w.i0, w.i1);
+  if (a.met_no_ice) a.notes.insert(a.notes.begin(), met_no_ice_note(a.force, w));
   a.fx = stats::block_average(slice(a.force.fx_N, w.i0, w.i1));
   a.fy = stats::block_average(slice(a.force.fy_N, w.i0, w.i1));
   a.fz = stats::block_average(slice(a.force.fz_N, w.i0, w.i1));
   const auto resistance_N = negated(slice(a.force.fx_N, w.i0, w.i1));
   a.resistance = stats::block_average(resistance_N);
+  if (a.met_no_ice) {  // no resistance: neither its notes nor its full-scale value
+    finish_analysis(a);
+    return a;
+  }
   if (!a.resistance.plateau_found)
     a.notes.push_back("block averaging found no plateau of the variance of the mean: the CI95 is a lower bound "
                       "(window too short for the signal's correlation time)");
-  if (w.i1 - w.i0 >= kMinTrendSamples) {
+  if (w.i1 - w.i0 < kMinTrendSamples) {
+    a.notes.push_back(fmt::format("the window holds {} samples: too few to check whether the resistance drifts "
+                                  "(its two halves need {} at least); the mean may depend on where the window ends",
+                                  w.i1 - w.i0, kMinTrendSamples));
+  } else {  // short windows too: a ramp over a short run is the drift most worth flagging
     const auto& t = *(a.resistance_trend = stats::halves_trend(resistance_N));
     if (t.drifts())
       a.notes.push_back(fmt::format(
@@ -207,12 +251,7 @@ RunAnalysis analyze_run(const std::filesystem::path& run_dir) {
   const double lam3 = std::pow(a.case_.scale_lambda, 3);
   a.resistance_full_kN = a.resistance.mean * lam3 / 1000.0;
   a.resistance_full_ci95_kN = a.resistance.ci95 * lam3 / 1000.0;
-
-  const auto measured = measure_case_hull_full_scale(a.case_, a.notes);
-  a.fsicr = resolve_fsicr(a.case_, measured);
-  if (a.fsicr.result && a.resistance_full_kN > 0)
-    a.ratio_fsicr_to_sim = a.fsicr.result->R_CH_N / 1000.0 / a.resistance_full_kN;
-  a.reference = published_reference(a.case_.references, run_fluid_model(a));
+  finish_analysis(a);
   return a;
 }
 
@@ -231,8 +270,9 @@ nlohmann::ordered_json reference_json(const RunAnalysis& a) {
                            {"fsicr_R_CH_kN", opt(r.fsicr_R_CH_kN)},
                            {"ratio_fsicr_to_sim", opt(r.ratio_fsicr_to_sim)},
                            {"ratio_stated", r.ratio_stated}};
-  j["resistance_over_reference"] =
-      r.resistance_full_kN ? nlohmann::ordered_json(a.resistance_full_kN / *r.resistance_full_kN) : nullptr;
+  j["resistance_over_reference"] = r.resistance_full_kN && !a.met_no_ice
+                                       ? nlohmann::ordered_json(a.resistance_full_kN / *r.resistance_full_kN)
+                                       : nullptr;
   return j;
 }
 
@@ -241,7 +281,10 @@ std::string reference_markdown(const RunAnalysis& a) {
   const auto& r = *a.reference;
   std::string md = fmt::format("## Published reference ({})\n\n| quantity | this run | published |\n|---|---|---|\n",
                                r.source);
-  if (r.resistance_full_kN)
+  if (r.resistance_full_kN && a.met_no_ice)
+    md += fmt::format("| resistance, full scale ({}) | met no ice | {:.0f} kN |\n", r.fluid_model,
+                      *r.resistance_full_kN);
+  else if (r.resistance_full_kN)
     md += fmt::format("| resistance, full scale ({}) | {:.1f} ± {:.1f} kN | {:.0f} kN (this run {:+.1f} %) |\n",
                       r.fluid_model, a.resistance_full_kN, a.resistance_full_ci95_kN, *r.resistance_full_kN,
                       100 * (a.resistance_full_kN / *r.resistance_full_kN - 1));
@@ -254,6 +297,27 @@ std::string reference_markdown(const RunAnalysis& a) {
                       a.ratio_fsicr_to_sim ? fmt::format("{:.2f}", *a.ratio_fsicr_to_sim) : "n/a",
                       *r.ratio_fsicr_to_sim, r.ratio_stated ? "stated" : "its R_CH over its resistance");
   return md + "\n";
+}
+
+// The resistance table, its block averaging and the stationarity check.
+std::string resistance_markdown(const RunAnalysis& a) {
+  const auto& L = a.resistance.levels[a.resistance.level];
+  std::string md;
+  md += fmt::format("| quantity | model scale | full scale |\n|---|---|---|\n"
+                    "| mean resistance | {:.4f} ± {:.4f} N | {:.1f} ± {:.1f} kN |\n"
+                    "| mean force x, y, z | {:.4f}, {:.4f}, {:.4f} N | |\n\n",
+                    a.resistance.mean, a.resistance.ci95, a.resistance_full_kN, a.resistance_full_ci95_kN,
+                    a.fx.mean, a.fy.mean, a.fz.mean);
+  md += fmt::format("± is the 95 % interval from block averaging (blocks of {} samples, {} blocks, plateau {}). "
+                    "Full scale = model * lambda^3.\n\n",
+                    L.block_size, L.n_blocks, a.resistance.plateau_found ? "found" : "NOT found");
+  if (const auto& t = a.resistance_trend)
+    md += fmt::format(
+        "Stationarity: the window's first half averages {:.4f} ± {:.4f} N, the second {:.4f} ± {:.4f} N; "
+        "difference {:+.4f} ± {:.4f} N ({}).\n\n",
+        t->first.mean, t->first.ci95, t->second.mean, t->second.ci95, t->difference, t->ci95,
+        t->drifts() ? "**the record drifts**: outside its CI" : "within its CI: no drift detected");
+  return md;
 }
 
 }  // namespace
@@ -293,6 +357,7 @@ nlohmann::ordered_json report_json(const RunAnalysis& a) {
                  {"t_last_s", a.force.t_s.back()}, {"incomplete_tail_dropped", a.force.tail_dropped}};
   j["record"]["gaps_in_window_s"] = J::array();
   for (const auto& g : a.gaps) j["record"]["gaps_in_window_s"].push_back({g.from_s, g.to_s});
+  j["met_no_ice"] = a.met_no_ice;  // then no resistance: resistance_model_N and the full-scale values are null
   j["resistance_model_N"] = {{"mean", a.resistance.mean}, {"ci95", a.resistance.ci95},
                              {"x", a.fx.mean}, {"y", a.fy.mean}, {"z", a.fz.mean},
                              {"ci95_xyz", {a.fx.ci95, a.fy.ci95, a.fz.ci95}},
@@ -306,6 +371,8 @@ nlohmann::ordered_json report_json(const RunAnalysis& a) {
   j["lambda"] = a.case_.scale_lambda;
   j["resistance_full_kN"] = a.resistance_full_kN;
   j["resistance_full_ci95_kN"] = a.resistance_full_ci95_kN;
+  if (a.met_no_ice)
+    for (const char* key : {"resistance_model_N", "resistance_full_kN", "resistance_full_ci95_kN"}) j[key] = nullptr;
   j["fsicr"] = fsicr;
   j["ratio_fsicr_to_sim"] = opt(a.ratio_fsicr_to_sim);
   j["wall_time_s"] = opt(a.meta.wall_time_s);
@@ -352,22 +419,13 @@ std::string report_markdown(const RunAnalysis& a) {
       "| wall time | {} |\n| particle steps | {} |\n| pieces gone through the channel's ends | {} |\n\n",
       a.meta.wall_time_s ? fmt::format("{:.1f} s", *a.meta.wall_time_s) : "n/a",
       a.meta.particle_steps ? fmt::format("{:.4g}", *a.meta.particle_steps) : "n/a", a.meta.exits);
-  const auto& L = a.resistance.levels[a.resistance.level];
   md += "## Resistance (resistance = -fx, force of the ice on the hull, contacts only)\n\n";
-  md += fmt::format("| quantity | model scale | full scale |\n|---|---|---|\n"
-                    "| mean resistance | {:.4f} ± {:.4f} N | {:.1f} ± {:.1f} kN |\n"
-                    "| mean force x, y, z | {:.4f}, {:.4f}, {:.4f} N | |\n\n",
-                    a.resistance.mean, a.resistance.ci95, a.resistance_full_kN, a.resistance_full_ci95_kN,
-                    a.fx.mean, a.fy.mean, a.fz.mean);
-  md += fmt::format("± is the 95 % interval from block averaging (blocks of {} samples, {} blocks, plateau {}). "
-                    "Full scale = model * lambda^3.\n\n",
-                    L.block_size, L.n_blocks, a.resistance.plateau_found ? "found" : "NOT found");
-  if (const auto& t = a.resistance_trend)
-    md += fmt::format(
-        "Stationarity: the window's first half averages {:.4f} ± {:.4f} N, the second {:.4f} ± {:.4f} N; "
-        "difference {:+.4f} ± {:.4f} N ({}).\n\n",
-        t->first.mean, t->first.ci95, t->second.mean, t->second.ci95, t->difference, t->ci95,
-        t->drifts() ? "**the record drifts**: outside its CI" : "within its CI: no drift detected");
+  if (a.met_no_ice)
+    md += fmt::format("**The hull met no ice in the averaging window [{:.3f}, {:.3f}] s**: every force sample there is "
+                      "zero, so this run has no resistance (see \"Read first\").\n\n",
+                      w.used_s[0], w.used_s[1]);
+  else
+    md += resistance_markdown(a);
   md += fmt::format("## FSICR channel resistance (ice class {})\n\n| parameter | value | source |\n|---|---|---|\n", a.fsicr.ice_class);
   for (const auto& [name, field] : fsicr_fields())
     md += fmt::format("| {} | {:.4g} | {} |\n", name, a.fsicr.params.*field, a.fsicr.source.at(name));

@@ -157,7 +157,8 @@ class Run:
         return self._read_csv(INDEX_FILE, INDEX_COLUMNS, "the index of the particle snapshots")
 
     def snapshot(self, step: int | None = None, *, index: int | None = None) -> pd.DataFrame:
-        """One particle snapshot as a DataFrame (id, x, y, z, radius, vx, vy, vz, submerged_fraction, ca_*).
+        """One particle snapshot as a DataFrame (id, x, y, z, radius, vx, vy, vz, submerged_fraction, ca_*, and
+        active where the engine writes it: 1 integrated, 0 idle far-field ice).
 
         run.snapshot(1200) is the snapshot of step 1200; run.snapshot(index=-1) the last one. The frame's
         attrs hold step, t_s and hull_x_m of that snapshot.
@@ -196,6 +197,9 @@ class Run:
         if rep is None:
             raise RunError(f"{self.path / REPORT_FILE} is missing: run `brash-post {self.path}` first")
         file = self.path / REPORT_FILE
+        if rep.get("met_no_ice"):
+            raise RunError(f"{file}: the hull met no ice in the averaging window {rep.get('window_s')} s: "
+                           "no resistance (report.json met_no_ice)")
         model = rep.get("resistance_model_N")
         if not isinstance(model, dict) or model.get("mean") is None or model.get("ci95") is None:
             raise RunError(f"{file}: no resistance_model_N.mean / ci95 (status {rep.get('status')!r}; "

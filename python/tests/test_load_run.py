@@ -46,8 +46,10 @@ def write_run(root: Path) -> Path:
     header = "id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z\n"
     (run / "particles" / "particles_0.csv").write_text(
         header + "".join(f"{i},{0.1 * i},0,-0.01,0.02,0,0,0,1,0,0,0\n" for i in range(1, 4)))
+    # LIGGGHTS and ODE end with the active column (1 integrated, 0 idle far-field ice); YADE's files do not
     (run / "particles" / "particles_100.csv").write_text(
-        header + "".join(f"{i},{0.1 * i + 0.05},0,-0.01,0.02,0.1,0,0,1,0,0,0\n" for i in range(1, 3)))
+        header.replace("\n", ",active\n")
+        + "".join(f"{i},{0.1 * i + 0.05},0,-0.01,0.02,0.1,0,0,1,0,0,0,{i % 2}\n" for i in range(1, 3)))
     return run
 
 
@@ -88,6 +90,8 @@ class LoadRun(unittest.TestCase):
         self.assertAlmostEqual(last.attrs["t_s"], 0.4)
         self.assertAlmostEqual(last.attrs["hull_x_m"], -7.3)
         self.assertAlmostEqual(last["vx"].iloc[0], 0.1)
+        self.assertEqual(last["active"].tolist(), [1, 0])
+        self.assertNotIn("active", first.columns)
 
     def test_snapshot_errors(self):
         run = brash.load_run(self.run_dir)
@@ -123,6 +127,15 @@ class LoadRun(unittest.TestCase):
         (self.run_dir / "report.json").write_text(json.dumps({"status": "failed", "notes": ["guard stop"]}))
         with self.assertRaisesRegex(brash.RunError, r"no resistance_model_N.*'failed'.*guard stop"):
             brash.load_run(self.run_dir).resistance()
+
+    def test_report_of_a_hull_that_met_no_ice(self):
+        (self.run_dir / "report.json").write_text(json.dumps(
+            dict(REPORT, met_no_ice=True, resistance_model_N=None, resistance_full_kN=None,
+                 resistance_full_ci95_kN=None, ratio_fsicr_to_sim=None)))
+        run = brash.load_run(self.run_dir)
+        self.assertTrue(run.report["met_no_ice"])
+        with self.assertRaisesRegex(brash.RunError, r"met no ice in the averaging window \[0\.2, 0\.4\] s"):
+            run.resistance()
 
     def test_not_a_run_directory_names_the_missing_file(self):
         empty = self.root / "empty"

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <unistd.h>
+#include <utility>
 
 #include "brash/case.hpp"
 #include "brash/error.hpp"
@@ -158,6 +159,31 @@ TEST(BrashCase, NewCaseFromParameters) {
   EXPECT_NEAR(s.ship.speed_m_s, 0.482 * std::sqrt(28.5 / 40), 1e-9);
 }
 
+// --scale moves the ice with the hull by Froude similarity (thickness, piece size and its sd by old / new lambda):
+// at full scale the brash is as thick as the template's, the thickness FSICR's R_CH assumes for the ice class.
+TEST(BrashCase, NewScaleScalesTheIceByFroude) {
+  const fs::path dir = temp_dir("scale_ice");
+  const brash::Case paper = brash::load_case(kRepo / "cases/jbc_ia_5kn/case.yaml");
+  ASSERT_EQ(paper.ship.scale_lambda, 28.5);
+  ASSERT_EQ(run((kBin / "brash-case").string() + " new s50 --cases-dir " + dir.string() + " --scale 50",
+                dir / "log.txt"), 0) << slurp(dir / "log.txt");
+  const brash::Case s = brash::load_case(dir / "s50/case.yaml");
+  const double k = 28.5 / 50;
+  EXPECT_NEAR(s.ice.thickness_m, paper.ice.thickness_m * k, 1e-12);
+  EXPECT_NEAR(s.ice.diameter_mean_m, paper.ice.diameter_mean_m * k, 1e-12);
+  EXPECT_NEAR(s.ice.diameter_sd_m, paper.ice.diameter_sd_m * k, 1e-12);
+  EXPECT_NEAR(s.ice.thickness_m * s.ship.scale_lambda, paper.ice.thickness_m * paper.ship.scale_lambda, 1e-9);
+  EXPECT_NEAR(s.run.timestep_s, paper.run.timestep_s * k, 1e-15);  // the same fraction of the pieces' Rayleigh time
+  EXPECT_NE(slurp(dir / "log.txt").find("the ice scaled by Froude"), std::string::npos) << slurp(dir / "log.txt");
+  // ice given on the command line wins
+  ASSERT_EQ(run((kBin / "brash-case").string() + " new t50 --cases-dir " + dir.string() +
+                    " --scale 50 --thickness 0.03 --diameter 0.012",
+                dir / "log2.txt"), 0) << slurp(dir / "log2.txt");
+  const brash::Case t = brash::load_case(dir / "t50/case.yaml");
+  EXPECT_DOUBLE_EQ(t.ice.thickness_m, 0.03);
+  EXPECT_DOUBLE_EQ(t.ice.diameter_mean_m, 0.012);
+}
+
 TEST(BrashCase, InvalidValueLeavesNoFolder) {
   const fs::path dir = temp_dir("bad");
   EXPECT_EQ(run((kBin / "brash-case").string() + " new bad --cases-dir " + dir.string() + " --fluid-model potential",
@@ -206,6 +232,47 @@ TEST(BrashCase, DeriveWritesAValidatedVariant) {
         << slurp(dir / "log4.txt");
     EXPECT_FALSE(fs::exists(dir / "bad/case.yaml"));
   }
+}
+
+// Published references describe one hull, speed, ice and fluid (docs/case_format.md "references"): a case made by
+// new or derive that changes any of them does not carry the paper case's, and the command says so; one that
+// changes only how the run is computed keeps them.
+TEST(BrashCase, ReferencesOnlyWhereTheyDescribeTheCase) {
+  const fs::path dir = temp_dir("references");
+  const std::string bin = (kBin / "brash-case").string();
+  const std::string paper = (kRepo / "cases/jbc_ia_5kn").string();
+  ASSERT_TRUE(brash::load_case(kRepo / "cases/jbc_ia_5kn/case.yaml").references.declared());
+  const auto made = [&](const std::string& args, const std::string& name) {
+    const fs::path log = dir / (name + ".log");
+    EXPECT_EQ(run(bin + " " + args, log), 0) << slurp(log);
+    return std::make_pair(brash::load_case(dir / name / "case.yaml"), slurp(log));
+  };
+  for (const std::string opts : {"--speed 0.3", "--scale 50", "--thickness 0.05", "--ice-class IB", "--width 3"}) {
+    const std::string name = "new" + std::to_string(opts.size()) + opts.substr(2, 3);
+    const auto [c, log] = made("new " + name + " --cases-dir " + dir.string() + " " + opts, name);
+    EXPECT_FALSE(c.references.declared()) << opts;
+    EXPECT_NE(log.find("references"), std::string::npos) << opts << ": " << log;
+    EXPECT_EQ(slurp(dir / name / "case.yaml").find("393"), std::string::npos) << opts;
+  }
+  const auto [same, same_log] = made("new same --cases-dir " + dir.string() + " --duration 10", "same");
+  EXPECT_EQ(same.references, brash::load_case(kRepo / "cases/jbc_ia_5kn/case.yaml").references);
+  for (const std::string key : {"ship.speed_m_s=0.3", "hull.draft_m=0.4", "ice.diameter_mean_m=0.02",
+                                "friction.ice_hull=0.2", "fluid.drag_coefficient=1.0"}) {
+    const std::string name = "d_" + key.substr(0, key.find('='));
+    const auto [c, log] = made("derive " + paper + " --set " + key + " --out " + (dir / name).string(), name);
+    EXPECT_FALSE(c.references.declared()) << key;
+    EXPECT_NE(log.find("references"), std::string::npos) << key << ": " << log;
+    EXPECT_NE(log.find(key.substr(0, key.find('='))), std::string::npos) << key << ": " << log;
+  }
+  for (const std::string key : {"ice.seed=2", "fluid.model=drag", "run.timestep_s=2.0e-4", "speedups.farfield=false"}) {
+    const std::string name = "k_" + key.substr(0, key.find('='));
+    const auto [c, log] = made("derive " + paper + " --set " + key + " --out " + (dir / name).string(), name);
+    EXPECT_TRUE(c.references.declared()) << key;
+  }
+  // references set with the change are the user's own: kept as set
+  const auto [own, own_log] = made("derive " + paper + " --set ship.speed_m_s=0.3 --set 'references.source=my tank' "
+                                   "--out " + (dir / "own").string(), "own");
+  EXPECT_EQ(own.references.source, "my tank");
 }
 
 TEST(BrashCase, GetPrintsAResolvedValue) {

@@ -10,7 +10,10 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include <fmt/format.h>
 
 #include "brash/case.hpp"
 #include "brash/hull/hydrostatics.hpp"
@@ -93,6 +96,32 @@ TEST(OwnHull, JbcStlBecomesACaseWithItsMeasuredKeys) {
   EXPECT_NE(r.out.find("bulbous bow"), std::string::npos) << r.out;  // FSICR parameters measured and printed
   EXPECT_NE(r.out.find("alpha 38.1 deg"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("no bow the FSICR formula"), std::string::npos) << r.out;
+  // another hull than the template's: the paper's published values are not this case's
+  EXPECT_FALSE(c.references.declared());
+  EXPECT_NE(r.out.find("published references"), std::string::npos) << r.out;
+}
+
+// The JBC at a lighter draft (0.3 m instead of 0.4125 m): the waterline cuts the bulb, whose top recedes going up.
+// The bulb is recognised there too (phi1 = 90 deg, as FSICR says for a bulbous bow), and every FSICR angle the case
+// is made with is in (0, 90] deg or named in a warning with its value and that range.
+TEST(OwnHull, JbcAtALighterDraftGivesFsicrAnglesOrSaysWhyNot) {
+  const fs::path dir = temp_dir("jbc_light");
+  const Result r = new_case(dir, "light", "--hull '" + kJbc.string() + "' --draft 0.3 --lpp 7.0");
+  ASSERT_EQ(r.rc, 0) << r.out;
+  const auto fsicr = brash::hull::measure_fsicr_detail(brash::hull::read_mesh(kJbc), 0.3, 7.0);
+  EXPECT_TRUE(fsicr.bulbous_bow);
+  EXPECT_EQ(fsicr.params.phi1_deg, 90.0);
+  EXPECT_NE(r.out.find("phi1 90.0 deg (bulbous bow)"), std::string::npos) << r.out;
+  const auto& p = fsicr.params;
+  for (const auto& [name, deg] : {std::pair{"alpha", p.alpha_deg}, std::pair{"phi1", p.phi1_deg},
+                                   std::pair{"phi2", p.phi2_deg}, std::pair{"psi", p.psi_deg}}) {
+    const std::string warning = fmt::format("warning: FSICR angle {} = {:.1f} deg is outside the valid range (0, 90]",
+                                            name, deg);
+    if (deg > 0 && deg <= 90)
+      EXPECT_EQ(r.out.find(warning), std::string::npos) << r.out;
+    else
+      EXPECT_NE(r.out.find(warning), std::string::npos) << name << " " << deg << "\n" << r.out;
+  }
 }
 
 // An OBJ box (quads, texture indices) is read natively and goes into the case folder as an STL; without --lpp the

@@ -135,6 +135,8 @@ INSTANTIATE_TEST_SUITE_P(AllModels, KernelVsReference,
                                             ::testing::Values(Treatment::Implicit, Treatment::Explicit),
                                             ::testing::Values(0, 1, 2, 3)));
 
+// The output's rows are kOutputStride wide: fraction, Ca x, y, z, active. A sphere outside the group (idle far-field
+// ice) floats all the same: its real submerged fraction, no Ca (no fluid force acts on it), active 0.
 TEST(Kernel, MaskSelectsGroupAndOutputHoldsFractionAndCa) {
   FluidParams p;
   Scene s = make_scene(3, 1);
@@ -145,9 +147,14 @@ TEST(Kernel, MaskSelectsGroupAndOutputHoldsFractionAndCa) {
   a.groupbit = 1;
   const std::vector<double> f0 = s.f;
   apply_kernel(p, a, 1e-3, false);
-  EXPECT_EQ(s.out[0], 1.0);
-  EXPECT_EQ(s.out[3], 0.5);  // Ca_z fully submerged, not reversed
-  EXPECT_EQ(s.out[4], 0.0);  // dry
+  const auto out = [&](int sphere, int column) { return s.out[kOutputStride * sphere + column]; };
+  EXPECT_EQ(out(0, 0), 1.0);
+  EXPECT_EQ(out(0, 3), 0.5);  // Ca_z fully submerged, not reversed
+  EXPECT_EQ(out(1, 0), 0.0);  // dry
+  EXPECT_EQ(out(0, 4), 1.0);  // in the group: integrated
+  EXPECT_EQ(out(1, 4), 1.0);
+  EXPECT_EQ(out(2, 0), 0.5);  // not in the group: half submerged all the same
+  for (int c = 1; c <= 4; ++c) EXPECT_EQ(out(2, c), 0.0) << c;  // no Ca, not active
   EXPECT_EQ(s.f[6], f0[6]);  // third sphere not in the group: untouched
   EXPECT_EQ(s.state[2 * kStateStride + 3], 0.0);
 }

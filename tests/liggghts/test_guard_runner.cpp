@@ -12,10 +12,12 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <sstream>
 #include <sys/wait.h>
 #include <string>
 #include <vector>
 
+#include "brash/core/immersion.hpp"
 #include "runner_case.h"
 
 namespace fs = std::filesystem;
@@ -93,6 +95,58 @@ TEST(LiggghtsGuardRunner, SoftIceBelowFiveMegapascalRuns) {
   EXPECT_EQ(run_case(dir), 0) << brash::test::read_text(dir / "run.log");
   EXPECT_NE(brash::test::read_text(dir / "run/in.lmp").find("\nsoft_particles yes\n"), std::string::npos);
   EXPECT_NE(brash::test::read_text(dir / "run/meta.json").find("\"complete\""), std::string::npos);
+  fs::remove_all(dir);
+}
+
+// A run whose window ends before the bow reaches the ice (the hull 0.25 m further back than in the small case, its
+// bulb 0.1 m outside the ice, 0.2 s away): the record holds only zero forces, and brash-post says the hull met no
+// ice instead of a resistance of 0 +- 0 N.
+TEST(LiggghtsGuardRunner, WindowBeforeTheBowReachesTheIceMetNoIce) {
+  const fs::path dir = brash::test::fresh_dir("met_no_ice");
+  write_small_case(dir / "case", "0.04", "");
+  edit_case(dir / "case", "\n  start_x_m:[^\n]*", "\n  start_x_m: -7.3");
+  ASSERT_EQ(run_case(dir), 0) << brash::test::read_text(dir / "run.log");
+  const std::string post = std::string("'") + BRASH_BIN_DIR + "/brash-post' '" + (dir / "run").string() +
+                           "' --no-plots --no-paraview > '" + (dir / "post.log").string() + "' 2>&1";
+  ASSERT_EQ(std::system(post.c_str()), 0) << brash::test::read_text(dir / "post.log");
+  const std::string report = brash::test::read_text(dir / "run/report.json");
+  EXPECT_NE(report.find("\"met_no_ice\": true"), std::string::npos) << report;
+  EXPECT_NE(report.find("\"resistance_model_N\": null"), std::string::npos) << report;
+  EXPECT_NE(brash::test::read_text(dir / "post.log").find("the hull met no ice in the window"), std::string::npos)
+      << brash::test::read_text(dir / "post.log");
+  fs::remove_all(dir);
+}
+
+// The far field's idle pieces float at rest: the particle files give their real submerged fraction (the core's
+// immersion of their position), no Ca and active = 0; the integrated ones active = 1.
+TEST(LiggghtsGuardRunner, IdleFarFieldPiecesAreExportedFloatingAndInactive) {
+  const fs::path dir = brash::test::fresh_dir("farfield_export");
+  write_small_case(dir / "case", "0.05",
+                   "speedups:\n  farfield: true\n  farfield_ahead_m: 0.1\n  farfield_every_steps: 100\n");
+  ASSERT_EQ(run_case(dir), 0) << brash::test::read_text(dir / "run.log");
+  std::istringstream rows(brash::test::read_text(dir / "run/particles/particles_0000000500.csv"));
+  std::string line;
+  std::getline(rows, line);
+  ASSERT_EQ(line, "id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z,active");
+  int idle = 0, active = 0;
+  while (std::getline(rows, line)) {
+    std::vector<double> v;
+    std::istringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) v.push_back(std::stod(cell));
+    ASSERT_EQ(v.size(), 13u) << line;
+    if (v[12] == 1) {
+      ++active;
+      continue;
+    }
+    ASSERT_EQ(v[12], 0.0) << line;
+    ++idle;
+    const double fraction = brash::core::immersion(v[4], v[3], 0.0).fraction;  // water level 0
+    EXPECT_GT(fraction, 0.0) << line;  // the bed floats
+    EXPECT_NEAR(v[8], fraction, 1e-5) << line;
+    for (int c = 9; c <= 11; ++c) EXPECT_EQ(v[c], 0.0) << line;
+  }
+  EXPECT_GT(idle, 0);
+  EXPECT_GT(active, 0);
   fs::remove_all(dir);
 }
 

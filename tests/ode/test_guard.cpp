@@ -16,8 +16,10 @@
 #include <iomanip>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "brash/case.hpp"
+#include "brash/core/immersion.hpp"
 #include "brash/core/params.hpp"
 #include "brash/packing.hpp"
 #include "brash/settle.hpp"
@@ -126,6 +128,25 @@ TEST_F(OdeGuard, HullOverlapAboveTheCaseThreshold) {
   EXPECT_EQ(step % 2, 0);
   EXPECT_GT(step, 0);
 }
+
+#ifdef BRASH_POST_EXE
+// A run that ends before the bow reaches the ice (the hull 12 cm further back than in the smoke case, 0.05 s): the
+// record holds only zero forces, and brash-post says the hull met no ice instead of a resistance of 0 +- 0 N.
+TEST_F(OdeGuard, RunEndingBeforeTheBowReachesTheIceMetNoIce) {
+  const auto dir = make_case("met_no_ice", "start_x_m: -7.03", "start_x_m: -7.15", "");
+  const Result r = run(dir, "0.05");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const fs::path log = dir.parent_path() / "post.log";
+  const std::string post = std::string("'") + BRASH_POST_EXE + "' '" + r.run.string() +
+                           "' --no-plots --no-paraview > '" + log.string() + "' 2>&1";
+  ASSERT_EQ(std::system(post.c_str()), 0) << slurp(log);
+  const auto report = nlohmann::json::parse(slurp(r.run / "report.json"), nullptr, false);
+  ASSERT_TRUE(report.is_object()) << slurp(log);
+  EXPECT_EQ(report.value("met_no_ice", false), true) << report.dump(2);
+  EXPECT_TRUE(report["resistance_model_N"].is_null()) << report.dump(2);
+  EXPECT_NE(slurp(log).find("the hull met no ice in the window"), std::string::npos) << slurp(log);
+}
+#endif
 
 TEST_F(OdeGuard, RunawayKineticEnergy) {
   // Explicit added mass with the text's Ca_z = 2 on reversal: m_a / m = 2.2 > 1 diverges (docs/stability.md);
@@ -312,6 +333,46 @@ TEST_F(OdeGuard, CaseFarFieldIsTheCullWithTheCasesWindowUnlessTheCommandLineSays
   EXPECT_NE(log.find("the front 0.3 m ahead of the foremost piece moving ahead faster than 0.005 m/s"),
             std::string::npos)
       << log;
+}
+
+// The far field's idle pieces float at rest: the particle files give their real submerged fraction (the core's
+// immersion of their position), no Ca and active = 0; the integrated ones active = 1. The hull 12 cm further back
+// than in the smoke case, the push front 0.07 m ahead of its bow: the bed beyond is idle from the start.
+TEST_F(OdeGuard, IdleFarFieldPiecesAreExportedFloatingAndInactive) {
+  const fs::path dir = make_case("farfield_export", "\nrun:\n",
+                                 "\nspeedups:\n  farfield: true\n  farfield_ahead_m: 0.07\n"
+                                 "  farfield_wake_by: push_front\nrun:\n",
+                                 "");
+  std::string yaml = slurp(dir / "case.yaml");
+  yaml.replace(yaml.find("start_x_m: -7.03"), 16, "start_x_m: -7.15");
+  std::ofstream(dir / "case.yaml") << yaml;
+  const Result r = run(dir, "0.02", "--dt 5e-4", "export");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::istringstream rows(slurp(r.run / "particles" / "particles_40.csv"));
+  std::string line;
+  std::getline(rows, line);
+  ASSERT_EQ(line, "id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z,active");
+  int idle = 0, active = 0;
+  while (std::getline(rows, line)) {
+    std::vector<double> v;
+    std::istringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) v.push_back(std::stod(cell));
+    ASSERT_EQ(v.size(), 13u) << line;
+    if (v[12] == 1) {
+      ++active;
+      continue;
+    }
+    ASSERT_EQ(v[12], 0.0) << line;
+    ++idle;
+    const double fraction = brash::core::immersion(v[4], v[3], 0.0).fraction;  // water level 0
+    EXPECT_GT(fraction, 0.0) << line;  // the bed floats
+    EXPECT_NEAR(v[8], fraction, 1e-5) << line;
+    EXPECT_EQ(v[9], 0.0) << line;
+    EXPECT_EQ(v[10], 0.0) << line;
+    EXPECT_EQ(v[11], 0.0) << line;
+  }
+  EXPECT_GT(idle, 0);
+  EXPECT_GT(active, 0);
 }
 
 // bench-ode --scene-from starts from another run's particle dump (its pieces, with their velocities) with the hull

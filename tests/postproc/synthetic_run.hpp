@@ -28,6 +28,7 @@ struct SyntheticRun {
   std::string meta_extra_json;        // more meta.json keys, e.g. R"(, "early_stop": {...})"
   std::string hull_extra_yaml;        // more hull: keys, e.g. "  band_m: [0.15, 0.1]\n"
   double deep_piece_z_m = 0;          // nonzero: piece 0's centre z in the second snapshot
+  bool active_column = true;          // particles files with the active column (LIGGGHTS, ODE; every 4th piece idle)
   // Written values (read back by the tests).
   std::vector<double> t_s, fx_N, fy_N_series, fz_N_series;
 };
@@ -110,12 +111,14 @@ inline void write_synthetic_run(const std::filesystem::path& dir, SyntheticRun& 
     const long step = std::lround(t / 5e-5);
     const auto file = fmt::format("particles_{}.csv", step);
     index += fmt::format("{},{},{},{}\n", step, t, file, -1.0 + 0.482 * t);
-    std::string p = "id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z\n";
+    std::string p = "id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z";
+    p += r.active_column ? ",active\n" : "\n";
     for (int i = 0; i < r.particles; ++i) {
       const double x = 0.1 * i + 0.01 * t, y = -1.0 + 0.03 * i;
       const double z = (i == 0 && k == 1 && r.deep_piece_z_m != 0) ? r.deep_piece_z_m : -0.005 * (i % 3);
-      p += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{}\n", i, x, y, z, 0.0088, 0.01 * i, 0.0, -0.001 * i,
+      p += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{}", i, x, y, z, 0.0088, 0.01 * i, 0.0, -0.001 * i,
                        0.9 + 0.001 * (i % 10), 0.5, 0.5, i % 2 ? 0.0 : 0.5);
+      p += r.active_column ? fmt::format(",{}\n", i % 4 ? 1 : 0) : "\n";
     }
     write_text(dir / "particles" / file, p);
   }

@@ -14,7 +14,9 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include <brash/error.hpp>
 #include <brash/post/csv.hpp>
+#include <brash/post/particles.hpp>
 
 #include "synthetic_run.hpp"
 
@@ -112,6 +114,34 @@ TEST_F(Outputs, ParticlesReadBackWithVtk) {
   EXPECT_NEAR(pd->GetArray("submerged_fraction")->GetTuple1(7), 0.907, 1e-15);
   EXPECT_NEAR(pd->GetArray("ca")->GetComponent(7, 2), 0.0, 1e-15);
   EXPECT_NEAR(pd->GetArray("ca")->GetComponent(6, 2), 0.5, 1e-15);
+  ASSERT_NE(pd->GetArray("active"), nullptr);  // 1 integrated, 0 idle far-field ice (every 4th synthetic piece)
+  EXPECT_EQ(pd->GetArray("active")->GetTuple1(7), 1.0);
+  EXPECT_EQ(pd->GetArray("active")->GetTuple1(8), 0.0);
+}
+
+// The particles files of LIGGGHTS and ODE end with the active column, YADE's (and older runs') at ca_z: both are
+// read; an active value other than 0 or 1 is refused naming the file, line and column.
+TEST(Particles, ActiveColumnIsReadWhereTheFileHasIt) {
+  const auto dir = scratch("active");
+  fs::create_directories(dir);
+  const std::string header = "id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z";
+  brash::post::testing::write_text(dir / "with.csv", header + ",active\n1,0,0,0,0.01,0,0,0,0.9,0.5,0.5,0.5,1\n"
+                                                              "2,1,0,-0.002,0.01,0,0,0,0.93,0,0,0,0\n");
+  const auto with = brash::post::read_snapshot(dir / "with.csv", false);
+  EXPECT_EQ(with.active, (std::vector<std::uint8_t>{1, 0}));
+  EXPECT_EQ(with.submerged_fraction[1], 0.93);
+  brash::post::testing::write_text(dir / "without.csv", header + "\n1,0,0,0,0.01,0,0,0,0.9,0.5,0.5,0.5\n");
+  const auto without = brash::post::read_snapshot(dir / "without.csv", false);
+  EXPECT_EQ(without.size(), 1u);
+  EXPECT_TRUE(without.active.empty());
+  brash::post::testing::write_text(dir / "bad.csv", header + ",active\n1,0,0,0,0.01,0,0,0,0.9,0.5,0.5,0.5,2\n");
+  try {
+    (void)brash::post::read_snapshot(dir / "bad.csv", false);
+    ADD_FAILURE() << "no InputError";
+  } catch (const brash::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.csv:2: column 'active'"), std::string::npos) << e.what();
+  }
+  fs::remove_all(dir);
 }
 
 TEST_F(Outputs, ParticlesReadBackWithMeshio) {
@@ -123,7 +153,7 @@ TEST_F(Outputs, ParticlesReadBackWithMeshio) {
       "m = meshio.read(sys.argv[1])\n"
       "pd = m.point_data\n"
       "assert m.points.shape == ({}, 3), m.points.shape\n"
-      "for k in ('radius', 'velocity', 'submerged_fraction', 'ca', 'id'): assert k in pd, (k, list(pd))\n"
+      "for k in ('radius', 'velocity', 'submerged_fraction', 'ca', 'id', 'active'): assert k in pd, (k, list(pd))\n"
       "assert pd['velocity'].shape == ({}, 3) and pd['ca'].shape == ({}, 3)\n"
       "assert abs(pd['velocity'][7][0] - 0.07) < 1e-15 and abs(pd['submerged_fraction'][7] - 0.907) < 1e-15\n"
       "assert abs(m.points[7][0] - 0.9) < 1e-12\n",

@@ -5,11 +5,13 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <regex>
 
 #include <nlohmann/json.hpp>
 
 #include <brash/error.hpp>
 #include <brash/post/csv.hpp>
+#include <brash/post/plots.hpp>
 #include <brash/post/report.hpp>
 
 #include "synthetic_run.hpp"
@@ -178,6 +180,85 @@ TEST(RunDir, ResistanceRisingThroughTheWindowIsFlagged) {
   EXPECT_NE(j["notes"].dump().find("not stationary over the window"), std::string::npos) << j["notes"];
   const std::string text = brash::post::read_text_file(dir / "report.md");
   EXPECT_NE(text.find("**the record drifts**"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+// A hull that meets no ice in the window (a short run, a window before the bow reaches the channel) records only
+// zero forces there: the report says so and shows no resistance (not 0 ± 0 N), nor a comparison with the
+// published value; the same whether the record has no contact at all or contacts only outside the window.
+TEST(RunDir, HullThatMetNoIceInTheWindowHasNoResistance) {
+  const auto dir = scratch("no_ice");
+  SyntheticRun r;
+  write_synthetic_run(dir, r);
+  EXPECT_FALSE(run_cli(dir)["met_no_ice"].get<bool>());
+  std::ofstream(dir / "case.yaml", std::ios::app) << "references:\n  source: \"Test source\"\n"
+                                                      "  resistance_full_kN: {added_mass: 40.0}\n";
+  for (const double contact_until_s : {0.0, 10.0}) {  // no contact at all; contacts at 2-10 s, before the window
+    std::string csv = "t_s,fx_N,fy_N,fz_N\n";
+    for (std::size_t i = 0; i < r.t_s.size(); ++i)
+      csv += r.t_s[i] > 1.995 && r.t_s[i] < contact_until_s ? fmt::format("{},-1.5,0.1,-0.2\n", r.t_s[i]) : fmt::format("{},0,0,0\n", r.t_s[i]);
+    brash::post::testing::write_text(dir / "hull_force.csv", csv);
+    const auto j = run_cli(dir);
+    const std::string notes = j["notes"].dump();
+    EXPECT_TRUE(j["met_no_ice"].get<bool>()) << contact_until_s;
+    EXPECT_TRUE(j["resistance_model_N"].is_null()) << j["resistance_model_N"];
+    EXPECT_TRUE(j["resistance_full_kN"].is_null());
+    EXPECT_TRUE(j["resistance_full_ci95_kN"].is_null());
+    EXPECT_TRUE(j["ratio_fsicr_to_sim"].is_null());
+    EXPECT_TRUE(j["reference"]["resistance_over_reference"].is_null());
+    EXPECT_NE(notes.find("met NO ICE in the averaging window [15.000, 40.000] s"), std::string::npos) << notes;
+    EXPECT_NE(notes.find(contact_until_s > 0 ? "first contact is at t = 2.000 s" : "touches no ice anywhere"),
+              std::string::npos) << notes;
+    EXPECT_EQ(notes.find("no plateau"), std::string::npos) << notes;
+    const std::string md = brash::post::read_text_file(dir / "report.md");
+    EXPECT_NE(md.find("**The hull met no ice in the averaging window [15.000, 40.000] s**"), std::string::npos) << md;
+    EXPECT_EQ(md.find("mean resistance |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| met no ice | 40 kN |"), std::string::npos) << md;
+    const std::string printed = brash::post::read_text_file(dir / "cli.log");
+    EXPECT_NE(printed.find("the hull met no ice in the window [15.000, 40.000] s: no resistance"), std::string::npos)
+        << printed;
+    EXPECT_EQ(printed.find("resistance 0.0000"), std::string::npos) << printed;
+    const auto row = compare_row(analyze_run(dir));
+    EXPECT_NE(compare_markdown({row}).find("| met no ice | met no ice |"), std::string::npos) << compare_markdown({row});
+    EXPECT_EQ(compare_markdown({row}).find("Published resistance"), std::string::npos);
+    EXPECT_NE(compare_csv({row}).find(",0.482,,,,,"), std::string::npos) << compare_csv({row});
+  }
+  fs::remove_all(dir);
+}
+
+// The drift check runs on every window, short ones too: a 1 s run whose resistance ramps from 0.3 to 1.4 N is
+// flagged (its mean, ~0.85 N, depends on where the window ends), a flat one of the same length is not, and a window
+// too short for two halves says that it could not be checked.
+TEST(RunDir, ShortRampIsFlaggedAsDrifting) {
+  const auto dir = scratch("short_ramp");
+  SyntheticRun r;
+  write_synthetic_run(dir, r);
+  brash::post::testing::write_text(dir / "case.yaml", std::regex_replace(brash::post::testing::synthetic_case_yaml(1.0),
+                                                                         std::regex("window_s: \\[15.0,"),
+                                                                         "window_s: [0.0,"));
+  const auto record = [&](double slope_N_per_s) {
+    std::string csv = "t_s,fx_N,fy_N,fz_N\n";
+    for (int i = 0; i <= 100; ++i) {
+      const double t = 0.01 * i, wiggle = i % 2 ? 0.05 : -0.05;
+      csv += fmt::format("{},{},0.01,-0.02\n", t, -(0.3 + slope_N_per_s * t + wiggle));
+    }
+    brash::post::testing::write_text(dir / "hull_force.csv", csv);
+    return run_cli(dir);
+  };
+  const auto ramp = record(1.1);
+  ASSERT_TRUE(ramp["resistance_model_N"].contains("window_halves")) << ramp.dump(2);
+  EXPECT_TRUE(ramp["resistance_model_N"]["window_halves"]["drifts"].get<bool>()) << ramp.dump(2);
+  EXPECT_NEAR(ramp["resistance_model_N"]["window_halves"]["difference"].get<double>(), 0.55, 0.02);
+  EXPECT_NE(ramp["notes"].dump().find("not stationary over the window"), std::string::npos) << ramp["notes"];
+  EXPECT_NE(brash::post::read_text_file(dir / "report.md").find("**the record drifts**"), std::string::npos);
+  const auto flat = record(0.0);
+  EXPECT_FALSE(flat["resistance_model_N"]["window_halves"]["drifts"].get<bool>()) << flat.dump(2);
+  EXPECT_EQ(flat["notes"].dump().find("not stationary"), std::string::npos) << flat["notes"];
+  brash::post::testing::write_text(dir / "hull_force.csv", "t_s,fx_N,fy_N,fz_N\n0,-0.3,0,0\n0.5,-0.8,0,0\n1,-1.4,0,0\n");
+  const auto three = run_cli(dir);
+  EXPECT_FALSE(three["resistance_model_N"].contains("window_halves"));
+  EXPECT_NE(three["notes"].dump().find("the window holds 3 samples: too few to check whether the resistance drifts"),
+            std::string::npos) << three["notes"];
   fs::remove_all(dir);
 }
 

@@ -11,6 +11,8 @@
 //     (brash-pack) when it is missing;
 //   - a hull.file or ice.packing_file given as an override is taken as given (relative to the derived case's folder,
 //     as in any case file).
+// References: the base's references: section is dropped when the variant changes a key they depend on
+// (keys_beyond_references), unless an override sets a references.* key itself.
 #pragma once
 #include <filesystem>
 #include <string>
@@ -47,6 +49,13 @@ Case write_derived_case(const std::filesystem::path& base_case_file, const CaseO
 
 // True when the two cases' packings are the same bed: every input of brash::packing_request is equal.
 bool same_packing_inputs(const Case& a, const Case& b);
+
+// Published references (references:) describe one hull, ship speed, ice and fluid: the dotted keys of the resolved
+// case whose value differs between `base` and `variant` and that change what references describe, i.e. every key
+// but those of how the run is computed (docs/case_format.md "references": name, description, run.*, speedups.*,
+// guards.*, fsicr.*, contact.youngs_modulus_pa, fluid.model, fluid.treatment, hull.band_m, hull.start_x_m, ice.seed,
+// ice.settle, ice.settle_speed_m_s, ice.packing_file). Empty: the variant may keep the base's references.
+std::vector<std::string> keys_beyond_references(const Case& base, const Case& variant);
 
 // The value of a dotted key in the resolved case (every default filled in, paths absolute), as dump_case_yaml
 // writes it: "5e-05", "drag", "[5.5, 11.0]". Throws InputError naming the key when the resolved case has no such key

@@ -137,17 +137,19 @@ void kernel(const FluidParams& p, const KernelArrays& a, double dt_s) {
   }
 }
 
-// Per-atom output of the last evaluation (submerged fraction, Ca used), from positions and the state flag.
+// Per-atom output of the last evaluation (submerged fraction, Ca used, active), from positions and the state flag;
+// a sphere outside the mask (idle) floats all the same: its immersion is its position's, its Ca 0 (no fluid force).
 // Not on the hot path: the readable immersion() and select_ca() of the reference serve.
 void fill_output(const FluidParams& p, const KernelArrays& a) {
   const bool added_mass = p.model != FluidModel::Drag;
   for (std::size_t i = 0; i < a.n; ++i) {
-    if (a.mask && !(a.mask[i] & a.groupbit)) continue;
+    const bool active = !a.mask || (a.mask[i] & a.groupbit);
     const double r = a.radius_m[i];
     const Immersion im = immersion(r, a.x_m[3 * i + 2], p.water_level_m);
-    const Vec3 ca = added_mass ? select_ca(p.ca, r, im, reversed_flag(a.state + kStateStride * i)) : Vec3::Zero();
+    const Vec3 ca = added_mass && active ? select_ca(p.ca, r, im, reversed_flag(a.state + kStateStride * i))
+                                         : Vec3::Zero();
     double* o = a.output + kOutputStride * i;
-    o[0] = im.fraction, o[1] = ca.x(), o[2] = ca.y(), o[3] = ca.z();
+    o[0] = im.fraction, o[1] = ca.x(), o[2] = ca.y(), o[3] = ca.z(), o[4] = active ? 1.0 : 0.0;
   }
 }
 

@@ -99,15 +99,15 @@ void convert_dump(const fs::path& dump, const fs::path& run_dir) {
     if (!atoms) continue;
     std::istringstream ss(line);
     long id;
-    double v[11];
+    double v[12];
     ss >> id;
     for (double& x : v) ss >> x;
     if (!ss) continue;
-    rows[id] = fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.6g},{:.6g},{:.6g},{:.6g}\n", id, v[0],
-                           v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9], v[10]);
+    rows[id] = fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.6g},{:.6g},{:.6g},{:.6g},{:.0f}\n", id,
+                           v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9], v[10], v[11]);
   }
   if (step < 0) return;
-  std::string csv = "id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z\n";
+  std::string csv = "id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z,active\n";
   for (const auto& [id, row] : rows) csv += row;
   run::write_atomic(run_dir / "particles" / fmt::format("particles_{:010d}.csv", step), csv);
 }

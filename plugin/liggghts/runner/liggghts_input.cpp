@@ -235,7 +235,8 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
                      out_every);
   }
   s += fmt::format(
-      "dump parts all custom {} particles/dump.*.txt id x y z radius vx vy vz f_fl[1] f_fl[2] f_fl[3] f_fl[4]\n",
+      "dump parts all custom {} particles/dump.*.txt id x y z radius vx vy vz f_fl[1] f_fl[2] f_fl[3] f_fl[4] "
+      "f_fl[5]\n",
       dump_every);
   s += "dump_modify parts pad 10\n";
   if (opt.restart_every_steps > 0)

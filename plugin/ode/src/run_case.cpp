@@ -397,7 +397,7 @@ void Stepping::save_restart(long step) {
 }
 
 void Stepping::dump(long step) {
-  std::string s = "id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z\n";
+  std::string s = "id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z,active\n";
   const World& w = *w_;
   for (std::size_t i = 0; i < w.size(); ++i) {
     const Vec3 x = w.position(i), v = w.velocity(i);
@@ -405,9 +405,12 @@ void Stepping::dump(long step) {
       throw std::runtime_error(fmt::format("sphere {} has a non-finite position/velocity at t = {} s (step {})",
                                            order_[i] + 1, double(step) * dt_, step));
     const auto im = core::immersion(w.radius(i), x.z(), c_.water.level_m);
-    const Vec3& ca = w.fluid_output(i).ca;
-    s += fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g},{:.6g},{:.6g},{:.6g},{:.6g},{:.4g},{:.4g},{:.4g}\n", order_[i] + 1, x.x(), x.y(),
-                     x.z(), w.radius(i), v.x(), v.y(), v.z(), im.fraction, ca.x(), ca.y(), ca.z());
+    // idle far-field ice (--cull) and retired pieces: active 0, no Ca (no fluid force acts on them)
+    const bool active = !w.culled(i) && !w.retired(i);
+    const Vec3 ca = active ? w.fluid_output(i).ca : Vec3::Zero();
+    s += fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g},{:.6g},{:.6g},{:.6g},{:.6g},{:.4g},{:.4g},{:.4g},{}\n",
+                     order_[i] + 1, x.x(), x.y(), x.z(), w.radius(i), v.x(), v.y(), v.z(), im.fraction, ca.x(),
+                     ca.y(), ca.z(), active ? 1 : 0);
   }
   const std::string name = fmt::format("particles_{}.csv", step);
   run::write_atomic(run_dir_ / "particles" / name, s);

@@ -109,7 +109,10 @@ void read_report(Run& r) {
   const auto status = opt<std::string>(j, Pointer("/status")).value_or("?");
   const auto mean = opt<double>(j, Pointer("/resistance_model_N/mean"));
   if (status != "complete") add_problem(r, fmt::format("run status '{}'", status));
-  if (!mean) add_problem(r, "report.json has no resistance_model_N.mean");
+  if (opt<bool>(j, Pointer("/met_no_ice")).value_or(false))
+    add_problem(r, "the hull met no ice in the averaging window (report.json met_no_ice): no resistance");
+  else if (!mean)
+    add_problem(r, "report.json has no resistance_model_N.mean");
   if (!r.problem.empty()) return;
   r.ok = true;
   r.mean_N = *mean;

@@ -30,8 +30,8 @@ Hydrostatics hydrostatics(const Mesh& mesh, double draft_m, double lpp_m = 0);
 //  - phi2: buttock y = B/4 (most forward x with Y >= B/4) at T +- dz (dz = 5 mm * Lpp / 7 m):
 //    atan(2 dz / (x(T + dz) - x(T - dz))), from the horizontal.
 //  - phi1: the same with the stem (most forward x of the section); set to 90 deg when the hull has a
-//    bulb (a point below T ahead of the stem at T), as the FSICR rule says. The geometric value is
-//    returned by measure_fsicr_detail.
+//    bulb (a point below T ahead of the stem at T, or a stem receding going up at T: a waterline that
+//    cuts the bulb), as the FSICR rule says. The geometric value is returned by measure_fsicr_detail.
 //  - psi = atan(tan(phi2) / sin(alpha)).
 //  - L_par: longest run of x where Y(x, T) >= B/2 - flat_tol (flat_tol = 1e-5 B), sampled every
 //    L / 70000; L_bow: from its forward end to the stem at T; A_wf: waterplane area over L_bow.

@@ -28,7 +28,7 @@ struct ParaviewOutput {
 };
 
 // Writes <run>/paraview/particles_<step>.vtu (point fields radius, velocity[3], submerged_fraction,
-// ca[3], id), <run>/paraview/hull_<step>.vtu (hull moved to the channel frame: x + hull_x_m,
+// ca[3], id, and active where the snapshot has it), <run>/paraview/hull_<step>.vtu (hull moved to the channel frame: x + hull_x_m,
 // z - draft + water level) and <run>/particles.pvd, <run>/hull.pvd. Every file is written atomically.
 // Snapshots whose file is missing are skipped with a note.
 ParaviewOutput write_paraview(const std::filesystem::path& run_dir, const std::vector<SnapshotEntry>& entries,

@@ -1,5 +1,6 @@
 // Particle snapshots of a run: particles/index.csv (step,t_s,file,hull_x_m) and
-// particles/particles_<step>.csv (id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z).
+// particles/particles_<step>.csv (id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z[,active]: active is
+// 1 for an integrated piece, 0 for idle far-field ice; files without it (YADE) are read too).
 #pragma once
 #include <cstdint>
 #include <filesystem>
@@ -17,6 +18,7 @@ struct SnapshotEntry {
 struct Snapshot {
   std::vector<std::int64_t> id;
   std::vector<double> x, y, z, radius, vx, vy, vz, submerged_fraction, ca_x, ca_y, ca_z;
+  std::vector<std::uint8_t> active;  // 1 integrated, 0 idle; empty when the file has no active column
   std::size_t size() const { return id.size(); }
   bool tail_dropped = false;
 };

@@ -29,7 +29,9 @@ std::filesystem::path plot_ice_views(const Snapshot& s, const SnapshotEntry& e, 
 
 struct CompareRow {
   std::string run, engine, fluid_model;
-  double speed_m_s = 0, mean_N = 0, ci95_N = 0, full_kN = 0, full_ci95_kN = 0;
+  double speed_m_s = 0;
+  double mean_N = NAN, ci95_N = NAN, full_kN = NAN, full_ci95_kN = NAN;  // NaN: the run's hull met no ice
+  bool met_no_ice = false;
   double R_CH_kN = NAN, ratio = NAN;
   double reference_full_kN = NAN;  // the case's published resistance for this fluid model (NaN: none declared)
   bool complete = false;

@@ -60,6 +60,9 @@ struct RunAnalysis {
   std::vector<RecordGap> gaps;  // stretches of the window with no record (record_gaps)
   stats::BlockingResult resistance;  // of -fx, model scale [N]
   stats::BlockingResult fx, fy, fz;  // force components of the ice on the hull [N]
+  // Every force sample of the window is zero: the record holds contact forces only, so the hull touched no ice
+  // there and there is no resistance to report (resistance and its full-scale value are not shown).
+  bool met_no_ice = false;
   std::optional<stats::HalvesTrend> resistance_trend;  // the window's two halves (>= kMinTrendSamples samples)
   double resistance_full_kN = 0, resistance_full_ci95_kN = 0;
   FsicrSummary fsicr;
@@ -69,8 +72,9 @@ struct RunAnalysis {
   std::vector<std::string> notes;  // everything a reader must know (truncation, fallbacks, ...)
 };
 
-// Fewest window samples for the stationarity check (each half then has >= 2 x kDefaultMinBlocks samples).
-inline constexpr std::size_t kMinTrendSamples = 64;
+// Fewest window samples for the stationarity check, made on every window that has them: two per half, so that each
+// half has a mean and a spread (stats::halves_trend).
+inline constexpr std::size_t kMinTrendSamples = 4;
 
 RunAnalysis analyze_run(const std::filesystem::path& run_dir);
 

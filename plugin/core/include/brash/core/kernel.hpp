@@ -21,7 +21,9 @@
 namespace brash::core {
 
 inline constexpr int kStateStride = 8;
-inline constexpr int kOutputStride = 4;  // submerged fraction, Ca_x, Ca_y, Ca_z
+// Per-sphere output: submerged fraction, Ca_x, Ca_y, Ca_z, active (1 integrated, 0 outside the mask: idle far-field
+// ice, whose submerged fraction is its real one and whose Ca is 0, as no fluid force acts on it)
+inline constexpr int kOutputStride = 5;
 
 struct KernelArrays {
   std::size_t n = 0;
