@@ -80,10 +80,13 @@ struct ChannelSpec {
   bool operator==(const ChannelSpec&) const = default;
 };
 
+// ice.diameter_sd_m when the case does not give it: this fraction of the case's ice.diameter_mean_m.
+inline constexpr double kDiameterSdOverMean = 0.05;
+
 struct IceSpec {
   double thickness_m = 0.03515;
   double diameter_mean_m = 0.017578;
-  double diameter_sd_m = 0.017578 * 0.05;  // default: 5 % of the mean (of the case's mean)
+  double diameter_sd_m = kDiameterSdOverMean * diameter_mean_m;  // default: 5 % of the mean (of the case's mean)
   double diameter_truncation_sd = 3.0;
   double density_kg_m3 = 900.0;
   double porosity = 0.28;
