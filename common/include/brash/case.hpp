@@ -101,10 +101,10 @@ struct IceSpec {
 };
 
 struct WaterSpec {
-  double density_kg_m3 = 1000.0;
+  double density_kg_m3 = kDefaultWaterDensity_kg_m3;  // the fluid defaults: brash/fluid_options.hpp
   double level_m = 0.0;
-  double gravity_m_s2 = 9.81;
-  double kinematic_viscosity_m2_s = 1.79e-6;
+  double gravity_m_s2 = kDefaultGravity_m_s2;
+  double kinematic_viscosity_m2_s = kDefaultKinematicViscosity_m2_s;
   bool operator==(const WaterSpec&) const = default;
 };
 
@@ -125,7 +125,7 @@ struct ContactSpec {
 struct FluidSpec {
   FluidModel model = FluidModel::Both;  // Eq. 1 + Eq. 2 (docs/physics.md)
   Treatment treatment = Treatment::Implicit;
-  double drag_coefficient = 0.44;
+  double drag_coefficient = kDefaultDragCoefficient;
   DragLaw drag_law = DragLaw::Constant;
   CaTableSpec ca_table;
   // U_flow of the drag: none = still water (the default); thin_ship = the water pushed ahead and aside by the
