@@ -1,6 +1,6 @@
-// The case file's keys (see case_key_table.hpp): one entry per key, in file order, then the checks across keys of each
-// section. A new key is one line here (and its field in brash/case.hpp); the loader, the resolved case, brash-case
-// keys and docs/case_format.md follow from it.
+// The case file's keys (see case_key_table.hpp): one entry per key, in file order, then the checks across keys of
+// each section. A new key is one line here (and its field in brash/case.hpp); the loader, the resolved case,
+// brash-case keys and docs/case_format.md follow from it.
 #include "case_key_table.hpp"
 
 #include <fmt/format.h>
@@ -21,11 +21,11 @@ namespace {
 // The field of a key: field<&Case::ice, &IceSpec::seed>(c) is c.ice.seed.
 template <auto... Path>
 auto& field(Case& c) {
-  return (c.*....*Path);
+  return (c .* ... .* Path);
 }
 template <auto... Path>
 const auto& field(const Case& c) {
-  return (c.*....*Path);
+  return (c .* ... .* Path);
 }
 
 bool positive(double x) { return x > 0; }
@@ -268,7 +268,8 @@ const KeySpec kIce[] = {
     number<&Case::ice, &IceSpec::porosity>("porosity", [](double p) { return p > 0 && p < 1; }, "in (0, 1)",
                                            "brash porosity"),
     choice<kPackingMode, &Case::ice, &IceSpec::packing_mode>(
-        "packing_mode", "volume: keep the ice volume per area (natural thickness); strict_two_layer: two layers"),
+        "packing_mode", "volume: place the ice volume (1 - porosity) x thickness per area, at its natural thickness; "
+        "strict_two_layer: fill the slab [0, thickness] (thickness between d_max and 3 d_min)"),
     kSeed,
     file<absolute_in, &Case::ice, &IceSpec::packing_file>("packing_file", "generated/packing.csv",
                                                           "the packing (brash-pack writes it when missing)"),
@@ -313,7 +314,7 @@ const KeySpec kFluid[] = {
                                                          "Eq. 2; docs/physics.md)"),
     choice<kTreatment, &Case::fluid, &FluidSpec::treatment>("treatment", "how the added mass is integrated"),
     number<&Case::fluid, &FluidSpec::drag_coefficient>("drag_coefficient", non_negative, ">= 0",
-                                                       "C_D of the drag law constant"),
+                                                       "C_D of drag_law constant"),
     choice<kDragLaw, &Case::fluid, &FluidSpec::drag_law>("drag_law", "C_D constant, or C_D(Re) of Schiller-Naumann"),
     kCaTable,
     choice<kHullFlow, &Case::fluid, &FluidSpec::hull_flow>(
@@ -338,17 +339,19 @@ const KeySpec kRun[] = {
 constexpr std::string_view kAngle = "an angle in (0, 90] deg";
 const KeySpec kFsicr[] = {
     optional_number<&Case::fsicr, &FsicrOverrides::alpha_deg>("alpha_deg", angle, kAngle,
-                                                              "FSICR waterline angle at B/4 (else measured)"),
-    optional_number<&Case::fsicr, &FsicrOverrides::phi1_deg>("phi1_deg", angle, kAngle, "FSICR stem angle at the "
-                                                                                        "centreline"),
-    optional_number<&Case::fsicr, &FsicrOverrides::phi2_deg>("phi2_deg", angle, kAngle, "FSICR stem angle at B/4"),
-    optional_number<&Case::fsicr, &FsicrOverrides::psi_deg>("psi_deg", angle, kAngle, "FSICR flare angle"),
+                                                              "waterline angle at B/4 (else measured on the STL)"),
+    optional_number<&Case::fsicr, &FsicrOverrides::phi1_deg>("phi1_deg", angle, kAngle,
+                                                             "stem rake at the centreline (90: bulbous bow)"),
+    optional_number<&Case::fsicr, &FsicrOverrides::phi2_deg>("phi2_deg", angle, kAngle,
+                                                             "bow rake (buttock angle) at B/4"),
+    optional_number<&Case::fsicr, &FsicrOverrides::psi_deg>("psi_deg", angle, kAngle,
+                                                            "flare angle, atan(tan(phi2) / sin(alpha))"),
     optional_number<&Case::fsicr, &FsicrOverrides::L_par_m>("L_par_m", non_negative, ">= 0 (m, full scale)",
-                                                            "FSICR parallel midbody length [m]"),
+                                                            "parallel mid-body length at the waterline [m]"),
     optional_number<&Case::fsicr, &FsicrOverrides::L_bow_m>("L_bow_m", positive, "> 0 (m, full scale)",
-                                                            "FSICR bow length [m]"),
+                                                            "bow length at the waterline [m]"),
     optional_number<&Case::fsicr, &FsicrOverrides::A_wf_m2>("A_wf_m2", positive, "> 0 (m^2, full scale)",
-                                                            "FSICR waterline area of the foreship [m^2]"),
+                                                            "waterline area of the bow (the L_bow part) [m^2]"),
 };
 
 const KeySpec kSpeedups[] = {

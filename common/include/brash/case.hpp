@@ -2,7 +2,7 @@
 // load_case() reads and validates a case.yaml, fills every default and resolves paths to absolute ones;
 // dump_case_yaml() writes the resolved case (a run directory's case.yaml), and
 // load_case(file containing dump_case_yaml(c)) == c.
-// All quantities are SI; the unit is in each field's name.
+// SI units, named in each field; a field's initial value is its key's default (keys: common/src/case_key_table.cpp).
 #pragma once
 #include <array>
 #include <cmath>
