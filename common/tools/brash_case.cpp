@@ -7,6 +7,8 @@
 // brash-case derive BASE --set key=value ... --out DIR: DIR/case.yaml, a variant of BASE through the case library
 // (brash::write_derived_case: keys set, paths and packing as brash/case_derive.hpp says, checked by the loader).
 // brash-case get CASE KEY: prints a key's value in the resolved case (every default filled in).
+// brash-case keys [--markdown | --page FILE]: the case file's keys with their defaults, accepted values and meaning
+// (brash/case_keys.hpp); --page rewrites the key table of a Markdown page (docs/case_format.md) in place.
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
@@ -29,6 +31,7 @@
 
 #include "brash/case.hpp"
 #include "brash/case_derive.hpp"
+#include "brash/case_keys.hpp"
 #include "brash/error.hpp"
 #include "brash/hull/hydrostatics.hpp"
 #include "brash/hull/mesh.hpp"
@@ -290,13 +293,13 @@ int make_case(const NewCaseOptions& o) {
   // user's hull keeps its measured dimensions; the speed keeps the template's full-scale speed, the ice its
   // full-scale thickness and piece size, which FSICR's R_CH and the comparison with it assume).
   if (o.scale) {
-    const double old_lambda = number_at(n, "ship", "scale_lambda", 28.5);
+    const double old_lambda = base.ship.scale_lambda;
     const double k = old_lambda / *o.scale;
     if (!own)
       for (const char* key : {"draft_m", "lpp_m", "beam_m", "start_x_m"})
         if (n["hull"][key].IsDefined()) n["hull"][key] = text(n["hull"][key].as<double>() * k);
     n["ship"]["scale_lambda"] = text(*o.scale);
-    if (!o.speed) n["ship"]["speed_m_s"] = text(number_at(n, "ship", "speed_m_s", 0.482) * std::sqrt(k));
+    if (!o.speed) n["ship"]["speed_m_s"] = text(base.ship.speed_m_s * std::sqrt(k));
     scale_ice(n, base, k, *o.scale, !o.thickness && !o.diameter);
     if (!own)
       std::cerr << fmt::format("brash-case: note: hull dimensions scaled by {:.4g}; hull.file still names {} "
@@ -332,7 +335,7 @@ int make_case(const NewCaseOptions& o) {
                                "room beside the hull (FSICR channels are about 2 beams)\n", width, width / own->beam_m);
     if (!o.scale)
       std::cerr << fmt::format("brash-case: note: scale 1:{:g} from the template (--scale): full-scale results and the "
-                               "FSICR comparison use it\n", number_at(n, "ship", "scale_lambda", 28.5));
+                               "FSICR comparison use it\n", base.ship.scale_lambda);
   }
   if (o.speed) n["ship"]["speed_m_s"] = text(*o.speed);
   if (!o.band.empty()) n["hull"]["band_m"] = flow_pair(o.band.at(0), o.band.at(1));
@@ -450,6 +453,44 @@ int get(const std::string& case_arg, const std::string& key) {
   return 0;
 }
 
+struct KeysOptions {
+  bool markdown = false;
+  std::string page;
+};
+
+// Replaces the lines from the begin marker to the end marker of `page` with the key table.
+void rewrite_key_table(const fs::path& page) {
+  std::ifstream in(page);
+  if (!in) throw brash::InputError(page.string() + ": cannot open");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string text = ss.str();
+  const std::size_t begin = text.find(brash::kCaseKeysBegin);
+  const std::size_t end_marker = text.find(brash::kCaseKeysEnd, begin == std::string::npos ? 0 : begin);
+  if (begin == std::string::npos || end_marker == std::string::npos)
+    throw brash::InputError(fmt::format("{}: no key table (the lines '{}' ... '{}')", page.string(),
+                                        brash::kCaseKeysBegin, brash::kCaseKeysEnd));
+  const std::size_t end = text.find('\n', end_marker);
+  const std::string rest = end == std::string::npos ? std::string() : text.substr(end + 1);
+  std::ofstream out(page);
+  out << text.substr(0, begin) << brash::case_keys_markdown() << rest;
+  if (!out) throw brash::InputError(page.string() + ": cannot write");
+}
+
+int keys(const KeysOptions& o) {
+  if (!o.page.empty()) {
+    rewrite_key_table(o.page);
+    return 0;
+  }
+  if (o.markdown) {
+    std::cout << brash::case_keys_markdown();
+    return 0;
+  }
+  for (const auto& k : brash::case_key_reference())
+    std::cout << fmt::format("{} = {}  ({}): {}\n", k.key, k.default_value, k.values, k.doc);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -502,8 +543,14 @@ int main(int argc, char** argv) {
   CLI::App* gt = app.add_subcommand("get", "print a key's value in the resolved case (every default filled in)");
   gt->add_option("CASE", get_case, "case folder or case.yaml")->required();
   gt->add_option("KEY", get_key, "dotted case key, e.g. run.timestep_s")->required();
+
+  KeysOptions k;
+  CLI::App* ks = app.add_subcommand("keys", "list the case file's keys: default, accepted values, meaning");
+  ks->add_flag("--markdown", k.markdown, "as the Markdown table of docs/case_format.md, with its marker lines");
+  ks->add_option("--page", k.page, "rewrite the key table (between the marker lines) of this Markdown page in place");
   CLI11_PARSE(app, argc, argv);
   try {
+    if (*ks) return keys(k);
     if (*dv) return derive(d);
     if (*gt) return get(get_case, get_key);
     return make_case(o);

@@ -5,9 +5,9 @@
    keywords (all optional; defaults in brackets):
      model        drag | added_mass | both                 [both]
      treatment    implicit | explicit                      [implicit]
-     cd           drag coefficient C_D                      [0.44]
+     cd           drag coefficient C_D                      [brash::kDefaultDragCoefficient]
      drag_law     constant | schiller_naumann              [constant]
-     nu           kinematic viscosity (m^2/s)              [1.79e-6]
+     nu           kinematic viscosity (m^2/s)              [brash::kDefaultKinematicViscosity_m2_s]
      ca           table1 | text | uniform VALUE            [table1]
      water_level  z of the free surface (m)                [0]
      water_density rho_w (kg/m^3)                          [1000]

@@ -2,7 +2,7 @@
 // load_case() reads and validates a case.yaml, fills every default and resolves paths to absolute ones;
 // dump_case_yaml() writes the resolved case (a run directory's case.yaml), and
 // load_case(file containing dump_case_yaml(c)) == c.
-// All quantities are SI; the unit is in each field's name.
+// SI units, named in each field; a field's initial value is its key's default (keys: common/src/case_key_table.cpp).
 #pragma once
 #include <array>
 #include <cmath>
@@ -80,10 +80,13 @@ struct ChannelSpec {
   bool operator==(const ChannelSpec&) const = default;
 };
 
+// ice.diameter_sd_m when the case does not give it: this fraction of the case's ice.diameter_mean_m.
+inline constexpr double kDiameterSdOverMean = 0.05;
+
 struct IceSpec {
   double thickness_m = 0.03515;
   double diameter_mean_m = 0.017578;
-  double diameter_sd_m = 0.017578 * 0.05;  // default: 5 % of the mean (of the case's mean)
+  double diameter_sd_m = kDiameterSdOverMean * diameter_mean_m;  // default: 5 % of the mean (of the case's mean)
   double diameter_truncation_sd = 3.0;
   double density_kg_m3 = 900.0;
   double porosity = 0.28;
@@ -98,10 +101,10 @@ struct IceSpec {
 };
 
 struct WaterSpec {
-  double density_kg_m3 = 1000.0;
+  double density_kg_m3 = kDefaultWaterDensity_kg_m3;  // the fluid defaults: brash/fluid_options.hpp
   double level_m = 0.0;
-  double gravity_m_s2 = 9.81;
-  double kinematic_viscosity_m2_s = 1.79e-6;
+  double gravity_m_s2 = kDefaultGravity_m_s2;
+  double kinematic_viscosity_m2_s = kDefaultKinematicViscosity_m2_s;
   bool operator==(const WaterSpec&) const = default;
 };
 
@@ -122,7 +125,7 @@ struct ContactSpec {
 struct FluidSpec {
   FluidModel model = FluidModel::Both;  // Eq. 1 + Eq. 2 (docs/physics.md)
   Treatment treatment = Treatment::Implicit;
-  double drag_coefficient = 0.44;
+  double drag_coefficient = kDefaultDragCoefficient;
   DragLaw drag_law = DragLaw::Constant;
   CaTableSpec ca_table;
   // U_flow of the drag: none = still water (the default); thin_ship = the water pushed ahead and aside by the

@@ -56,12 +56,13 @@ def _engines_of_type(O, name):
 class FluidAdapter:
     """Fluid forces of the brash core on YADE spheres chosen by `mask` or `ids`."""
 
-    def __init__(self, ids=None, model="both", treatment="implicit", cd=0.44, drag_law="constant", nu=1.79e-6,
-                 ca_table="table1", water_level=0.0, water_density=1000.0, g=None, fluid=None, mask=None,
-                 label="brashFluid"):
+    # The fluid defaults are the core's (brash/fluid_options.hpp), as the module passes them on.
+    def __init__(self, ids=None, model="both", treatment="implicit", cd=brash_yade.DEFAULT_CD, drag_law="constant",
+                 nu=brash_yade.DEFAULT_NU, ca_table="table1", water_level=0.0,
+                 water_density=brash_yade.DEFAULT_WATER_DENSITY, g=None, fluid=None, mask=None, label="brashFluid"):
         """ids: body ids (a fixed list, see add()/remove()), or mask: a groupMask (re-scanned), one of the two.
         fluid: a brash_yade.Fluid (e.g. Fluid.from_case(case.yaml)) used instead of the keyword parameters; its g
-        must then agree with NewtonIntegrator's gravity when that is not zero. g=None: 9.81 m/s^2, or
+        must then agree with NewtonIntegrator's gravity when that is not zero. g=None: brash_yade.DEFAULT_G, or
         NewtonIntegrator's |gravity| when it has one."""
         from yade import O  # imported here so the module can be imported (for docs) outside yade
         self.O = O
@@ -74,7 +75,7 @@ class FluidAdapter:
             self._g_given = g is not None
             fluid = brash_yade.Fluid(model=model, treatment=treatment, cd=cd, drag_law=drag_law, nu=nu,
                                      ca_table=ca_table, water_level=water_level, water_density=water_density,
-                                     g=9.81 if g is None else g, apply_gravity=True)
+                                     g=brash_yade.DEFAULT_G if g is None else g, apply_gravity=True)
         else:
             if g is not None:
                 raise ValueError("FluidAdapter: give g through the fluid (Fluid(g=...)) when passing fluid=")

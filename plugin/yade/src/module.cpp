@@ -378,6 +378,11 @@ class Guard {
 
 PYBIND11_MODULE(brash_yade, mod) {
   mod.doc() = "brash fluid forces (buoyancy, drag, added mass) for YADE spheres, from brash_core";
+  // the core's defaults, for Python code that takes the same parameters (brash_yade_adapter.FluidAdapter)
+  mod.attr("DEFAULT_CD") = brash::kDefaultDragCoefficient;
+  mod.attr("DEFAULT_NU") = brash::kDefaultKinematicViscosity_m2_s;
+  mod.attr("DEFAULT_WATER_DENSITY") = brash::kDefaultWaterDensity_kg_m3;
+  mod.attr("DEFAULT_G") = brash::kDefaultGravity_m_s2;
 
   py::class_<Fluid>(mod, "Fluid")
       .def(py::init([](const std::string& model, const std::string& treatment, double cd, const std::string& drag_law,
@@ -386,10 +391,11 @@ PYBIND11_MODULE(brash_yade, mod) {
              return Fluid(make_params(model, treatment, cd, drag_law, nu, ca_table, water_level, water_density, g,
                                       apply_gravity));
            }),
-           py::arg("model") = "both", py::arg("treatment") = "implicit", py::arg("cd") = 0.44,
-           py::arg("drag_law") = "constant", py::arg("nu") = 1.79e-6, py::arg("ca_table") = "table1",
-           py::arg("water_level") = 0.0, py::arg("water_density") = 1000.0, py::arg("g") = 9.81,
-           py::arg("apply_gravity") = true)
+           py::arg("model") = "both", py::arg("treatment") = "implicit",
+           py::arg("cd") = brash::kDefaultDragCoefficient, py::arg("drag_law") = "constant",
+           py::arg("nu") = brash::kDefaultKinematicViscosity_m2_s, py::arg("ca_table") = "table1",
+           py::arg("water_level") = 0.0, py::arg("water_density") = brash::kDefaultWaterDensity_kg_m3,
+           py::arg("g") = brash::kDefaultGravity_m_s2, py::arg("apply_gravity") = true)
       .def_static(
           "from_case",
           [](const std::string& case_file, bool apply_gravity) {

@@ -11,6 +11,13 @@ enum class Treatment { Explicit, Implicit };       // lagged acceleration vs mas
 enum class DragLaw { Constant, SchillerNaumann };  // C_D constant or C_D(Re)
 enum class HullFlow { None, ThinShip, Panel };     // still water, or the flow around the hull (drag's U_flow)
 
+// Defaults of the fluid parameters, one value for the core (brash::core::FluidParams), the case file (brash::Case)
+// and the engines' own keywords (the YADE module passes them on to Python as brash_yade.DEFAULT_*).
+inline constexpr double kDefaultDragCoefficient = 0.44;
+inline constexpr double kDefaultKinematicViscosity_m2_s = 1.79e-6;  // water near 0 C
+inline constexpr double kDefaultWaterDensity_kg_m3 = 1000.0;
+inline constexpr double kDefaultGravity_m_s2 = 9.81;
+
 constexpr std::string_view to_string(FluidModel m) {
   switch (m) {
     case FluidModel::Drag: return "drag";

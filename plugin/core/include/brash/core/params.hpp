@@ -1,7 +1,7 @@
 // Fluid-model parameters shared by every engine adapter, with self-validation.
-// Defaults are the paper's added-mass model as its results show it (physics.md): drag (Eq. 1, C_D 0.44) plus
-// added mass (Eq. 2, Table 1), implicit treatment. FluidModel::AddedMass (Eq. 2 alone, the literal reading of
-// the paper's Methods sentence) and FluidModel::Drag stay selectable.
+// Defaults are the paper's added-mass model as its results show it (physics.md): drag (Eq. 1, the constant C_D of
+// brash/fluid_options.hpp) plus added mass (Eq. 2, Table 1), implicit treatment. FluidModel::AddedMass (Eq. 2
+// alone, the literal reading of the paper's Methods sentence) and FluidModel::Drag stay selectable.
 #pragma once
 #include <Eigen/Core>
 
@@ -44,16 +44,16 @@ struct CaTable {
 };
 
 struct FluidParams {
-  double water_density_kg_m3 = 1000.0;
+  double water_density_kg_m3 = kDefaultWaterDensity_kg_m3;
   double water_level_m = 0.0;
-  double gravity_m_s2 = 9.81;
+  double gravity_m_s2 = kDefaultGravity_m_s2;
   bool apply_gravity = false;                 // add -m g here (else the engine's own gravity does)
   Vec3 flow_velocity_m_s = Vec3::Zero();
   FluidModel model = FluidModel::Both;
   Treatment treatment = Treatment::Implicit;
   DragLaw drag_law = DragLaw::Constant;
-  double drag_coefficient = 0.44;
-  double kinematic_viscosity_m2_s = 1.79e-6;  // water near 0 C
+  double drag_coefficient = kDefaultDragCoefficient;
+  double kinematic_viscosity_m2_s = kDefaultKinematicViscosity_m2_s;
   CaTable ca;
 
   bool has_drag() const { return model != FluidModel::AddedMass; }
