@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include <brash/error.hpp>
+#include <brash/force_record.hpp>
 #include <brash/post/csv.hpp>
 
 namespace brash::post {
@@ -37,16 +38,16 @@ std::vector<std::string> split_fields(const std::string& line) {
 }  // namespace
 
 ForceHistory read_force_history(const std::filesystem::path& path, bool run_in_progress) {
-  static constexpr std::array<std::string_view, 4> kHeader{"t_s", "fx_N", "fy_N", "fz_N"};
-  const auto text = read_text_file(path);
+  const run::ForceRecord record = run::read_hull_force_csv(path, run_in_progress);
   ForceHistory h;
-  const auto scan = scan_csv(path, text, kHeader, run_in_progress,
-                             [&](std::size_t line, std::span<const std::string_view> f) {
-    std::array<double, 4> v{};
-    for (std::size_t k = 0; k < 4; ++k) v[k] = parse_finite(f[k], path, line, kHeader[k]);
-    append_row(h, path, line, v);
-  });
-  h.tail_dropped = scan.tail_dropped;
+  for (auto* v : {&h.t_s, &h.fx_N, &h.fy_N, &h.fz_N}) v->reserve(record.rows.size());
+  for (const auto& r : record.rows) {
+    h.t_s.push_back(r.t_s);
+    h.fx_N.push_back(r.fx_N);
+    h.fy_N.push_back(r.fy_N);
+    h.fz_N.push_back(r.fz_N);
+  }
+  h.tail_dropped = record.tail_dropped;
   return h;
 }
 

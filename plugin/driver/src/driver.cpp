@@ -10,9 +10,9 @@
 #include <optional>
 
 #include "brash/error.hpp"
+#include "brash/force_record.hpp"
 #include "brash/run_layout.hpp"
 #include "brash/settle.hpp"
-#include "record.hpp"
 #include "run_monitor.hpp"
 #include "stop_signals.hpp"
 

@@ -7,9 +7,9 @@
 #include <limits>
 #include <unistd.h>
 
+#include "brash/force_record.hpp"
 #include "brash/run_layout.hpp"
 #include "brash/stats/early_stop.hpp"
-#include "record.hpp"
 
 namespace fs = std::filesystem;
 

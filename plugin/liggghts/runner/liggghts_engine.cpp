@@ -3,16 +3,15 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <csignal>
 #include <cstdio>
 #include <fmt/format.h>
 #include <fstream>
 #include <iostream>
 #include <regex>
 #include <sstream>
-#include <sys/wait.h>
 
 #include "brash/case_hull_flow.hpp"
+#include "brash/child_process.hpp"
 #include "brash/error.hpp"
 #include "brash/hull/panel_flow.hpp"
 #include "brash/run_layout.hpp"
@@ -244,12 +243,6 @@ bool read_thermo(ScreenState& s, const std::string& line, long& step, double& t,
   return s.in_thermo && std::sscanf(line.c_str(), " %ld %lf %ld", &step, &t, &atoms) == 3;
 }
 
-long read_pid(const fs::path& file) {
-  std::ifstream in(file);
-  long pid = 0;
-  return in >> pid && pid > 0 ? pid : 0;
-}
-
 }  // namespace
 
 // Runs the engine (under the MPI launcher when ranks > 1) on the input script, copies its screen output to log.txt, reports
@@ -266,39 +259,27 @@ run::Attempt LiggghtsEngine::advance(const fs::path& run_dir, const std::string&
     input = "in_resume.lmp";
     run::write_atomic(run_dir / input, input_script(case_, box_, options_));
   }
-  // exec: the shell's pid becomes the engine's (the launcher's), so that a stop can signal it
-  std::string cmd = "cd " + run::shell_quote(run_dir) + " && echo $$ > engine.pid && exec " + launch_prefix_;
-  cmd += run::shell_quote(run::executable_dir() / "brash-liggghts") + " -in " + input + " -log none 2>&1";
+  const run::ChildCommand command{
+      run_dir, "", launch_prefix_ + run::shell_quote(run::executable_dir() / "brash-liggghts") + " -in " + input + " -log none"};
   std::ofstream log(run_dir / "log.txt", std::ios::app);
-  FILE* pipe = ::popen(cmd.c_str(), "r");
-  if (!pipe) throw std::runtime_error("cannot start " + cmd);
   run::Attempt a;
   ScreenState screen;
-  long pid = 0;
-  bool stop_sent = false;
   double t_stop = -1;
-  char buf[4096];
-  while (std::fgets(buf, sizeof buf, pipe)) {
-    const std::string line = buf;
+  const auto on_line = [&](const std::string& line) {
     log << line << std::flush;  // a runner killed outright (kill -9) loses no line
-    if (pid == 0 && (pid = read_pid(run_dir / "engine.pid")) > 0) monitor.engine_process(pid);
     long step, atoms;
     double t;
-    if (!read_thermo(screen, line, step, t, atoms)) continue;
+    if (!read_thermo(screen, line, step, t, atoms)) return false;
     if (screen.prev_step >= 0 && step > screen.prev_step) a.particle_steps += double(atoms) * double(step - screen.prev_step);
     screen.prev_step = step;
     a.t_last_s = t;
     if (a.t_first_s < 0) a.t_first_s = t;
-    if (monitor.progress(t, a.particle_steps) && !stop_sent && pid > 0) {
-      stop_sent = true;
-      t_stop = t;
-      ::kill(static_cast<pid_t>(pid), SIGTERM);
-    }
-  }
+    if (!monitor.progress(t, a.particle_steps)) return false;
+    if (t_stop < 0) t_stop = t;
+    return true;
+  };
+  const int exit_code = run::run_child(command, {[&](long pid) { monitor.engine_process(pid); }, on_line}).code;
   a.started = screen.started;
-  const int rc = ::pclose(pipe);
-  monitor.engine_process(0);
-  const int exit_code = WIFEXITED(rc) ? WEXITSTATUS(rc) : 128;
   if (screen.steps > 0) a.particle_steps = double(screen.atoms) * double(screen.steps);
   if (monitor.stop_reason() == run::StopReason::EarlyStop && t_stop >= 0)  // the engine ran on until the signal landed
     a.particle_steps = double(spheres_.size()) * std::round((t_stop - std::max(0.0, a.t_first_s)) / case_.run.timestep_s);

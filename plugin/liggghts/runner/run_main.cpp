@@ -9,6 +9,7 @@
 
 #include "brash/case.hpp"
 #include "brash/error.hpp"
+#include "brash/force_record.hpp"
 #include "brash/run/driver.hpp"
 #include "brash/run/driver_cli.hpp"
 #include "brash/run_layout.hpp"
@@ -27,11 +28,9 @@ int rebuild_record(const fs::path& run_dir) {
   if (raws.empty())
     throw brash::InputError(run_dir.string() + ": no hull_force.raw or hull_force.part*.raw to rebuild the record from");
   const brash::run::RunDirLock lock(run_dir);  // not while a runner writes it
-  std::string csv = "t_s,fx_N,fy_N,fz_N\n";
-  const auto rows = read_hull_force_raws(raws, std::numeric_limits<double>::infinity());
-  for (const auto& r : rows) csv += fmt::format("{:.9g},{:.9g},{:.9g},{:.9g}\n", r.t_s, r.fx_N, r.fy_N, r.fz_N);
-  brash::run::write_atomic(run_dir / "hull_force.csv", csv);
-  std::cerr << "[brash-liggghts] " << (run_dir / "hull_force.csv").string() << ": " << rows.size() << " rows from "
+  const std::size_t rows = brash::run::write_hull_force_csv(
+      run_dir / "hull_force.csv", read_hull_force_raws(raws, std::numeric_limits<double>::infinity()));
+  std::cerr << "[brash-liggghts] " << (run_dir / "hull_force.csv").string() << ": " << rows << " rows from "
             << raws.size() << " raw file(s)\n";
   if (fs::is_directory(run_dir / "particles")) {
     const std::size_t converted = convert_dumps(run_dir, brash::load_case(run_dir / "case.yaml"));

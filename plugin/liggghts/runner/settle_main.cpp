@@ -4,7 +4,6 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include <sys/wait.h>
 
 #include <cmath>
 #include <cstdio>
@@ -16,6 +15,7 @@
 #include <utility>
 
 #include "brash/case.hpp"
+#include "brash/child_process.hpp"
 #include "brash/error.hpp"
 #include "brash/guard.hpp"
 #include "brash/packing.hpp"
@@ -32,28 +32,25 @@ namespace {
 // Runs the settling deck in `work`, its screen output into work/screen.txt, and reports each chunk's model time
 // and rms speed on stderr (a paper-size bed takes tens of minutes). Returns LIGGGHTS' exit code and its output.
 std::pair<int, std::string> run_settling(const fs::path& work, double target_m_s) {
-  const std::string cmd = "cd " + run::shell_quote(work) + " && " +
-                          run::shell_quote(run::executable_dir() / "brash-liggghts") + " -in in.lmp -log log.txt 2>&1";
-  FILE* pipe = ::popen(cmd.c_str(), "r");
-  if (!pipe) throw std::runtime_error("cannot start " + cmd);
+  const run::ChildCommand command{work, "", run::shell_quote(run::executable_dir() / "brash-liggghts") +
+                                                " -in in.lmp -log log.txt"};
   std::ofstream screen_file(work / "screen.txt");
   std::string screen;
   const std::string tag = "brash-settle progress: t ";
-  char buf[4096];
-  while (std::fgets(buf, sizeof buf, pipe)) {
-    const std::string line = buf;
+  const auto on_line = [&](const std::string& line) {
     screen += line;
     screen_file << line << std::flush;
-    if (line.rfind(tag, 0) != 0) continue;
+    if (line.rfind(tag, 0) != 0) return false;
     double t = 0, vrms = 0;
     std::string word;
     std::istringstream in(line.substr(tag.size()));
     if (in >> t >> word >> vrms)
       std::cerr << fmt::format("[brash-settle] t = {:.2f} s, rms speed {:.3g} m/s (settled below {:g})\n", t, vrms,
                                target_m_s);
-  }
-  const int rc = ::pclose(pipe);
-  return {WIFEXITED(rc) ? WEXITSTATUS(rc) : 128, screen};
+    return false;
+  };
+  const int code = run::run_child(command, {[](long /*pid*/) {}, on_line}).code;  // no driver: nothing to forward
+  return {code, screen};
 }
 
 // "brash-settle: t 1.2 vrms 0.00093" from LIGGGHTS' screen output: {t, vrms}; throws if absent.

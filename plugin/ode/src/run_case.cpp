@@ -19,6 +19,7 @@
 #include "brash/case_hull_flow.hpp"
 #include "brash/core/spatial_order.hpp"
 #include "brash/error.hpp"
+#include "brash/force_record.hpp"
 #include "brash/guard.hpp"
 #include "brash/hull/flow.hpp"
 #include "brash/hull/mesh.hpp"
@@ -419,9 +420,7 @@ void Stepping::dump(long step) {
 }
 
 void Stepping::flush() {
-  std::string csv = "t_s,fx_N,fy_N,fz_N\n";
-  for (const auto& r : rows_) csv += fmt::format("{:.9g},{:.9g},{:.9g},{:.9g}\n", r.t_s, r.fx_N, r.fy_N, r.fz_N);
-  run::write_atomic(run_dir_ / "hull_force.csv", csv);
+  run::write_hull_force_csv(run_dir_ / "hull_force.csv", rows_);
   run::write_atomic(run_dir_ / "log.txt", log_);
 }
 
@@ -471,10 +470,7 @@ bool Stepping::step(long k, run::Attempt& a) {
   if (k % n_out_ == 0) {
     const Vec3 m = acc_ / double(n_out_);
     // the row as written (the early stop reads what a replay of hull_force.csv reads)
-    const auto text = fmt::format("{:.9g},{:.9g},{:.9g}", m.x(), m.y(), m.z());
-    run::ForceRow row{t, 0, 0, 0};
-    std::sscanf(text.c_str(), "%lf,%lf,%lf", &row.fx_N, &row.fy_N, &row.fz_N);
-    rows_.push_back(row);
+    rows_.push_back({t, run::as_recorded(m.x()), run::as_recorded(m.y()), run::as_recorded(m.z())});
     acc_.setZero();
   }
   a.t_last_s = t;
@@ -581,14 +577,9 @@ run::Attempt Stepping::run(bool resume, RunSummary& summary) {
 run::Attempt OdeEngine::advance(const fs::path& run_dir, const std::string& restart, run::Monitor& monitor) {
   const bool resume = !restart.empty();
   rows_.clear();
-  if (resume) {  // the record so far; the restart point decides which rows stay
-    std::istringstream in(read_text(run_dir / "hull_force.csv"));
-    std::string line;
-    std::getline(in, line);
-    run::ForceRow r;
-    while (std::getline(in, line))
-      if (std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf", &r.t_s, &r.fx_N, &r.fy_N, &r.fz_N) == 4) rows_.push_back(r);
-  }
+  // the record so far (written whole before each restart file); the restart point decides which rows stay
+  if (resume && fs::exists(run_dir / "hull_force.csv"))
+    rows_ = run::read_hull_force_csv(run_dir / "hull_force.csv", /*drop_unterminated_tail=*/false).rows;
   if (const Skips k = cull_skips(options_, scene_->c); k.cull && !k.wake_rule().enabled())
     fmt::print(stderr, "[brash-ode] warning: --cull with no wake rule (the window alone): the push of the bow "
                        "cannot reach past the window and the mean resistance is biased high "

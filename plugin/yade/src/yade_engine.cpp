@@ -2,16 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <fmt/format.h>
 #include <fstream>
 #include <iostream>
 #include <sstream>
-#include <sys/wait.h>
 
+#include "brash/child_process.hpp"
 #include "brash/error.hpp"
+#include "brash/force_record.hpp"
 #include "brash/guard.hpp"
 #include "brash/paths.hpp"
 #include "brash/run_layout.hpp"
@@ -30,23 +30,16 @@ fs::path env_or(const char* var, const fs::path& fallback) {
   return v && *v ? fs::path(v) : fallback;
 }
 
-std::string yade_command(const fs::path& run_dir, int threads, const std::string& restart) {
+run::ChildCommand yade_command(const fs::path& run_dir, int threads, const std::string& restart) {
   const fs::path home = std::getenv("HOME") && *std::getenv("HOME") ? fs::path(std::getenv("HOME")) : run_dir / "home";
   fs::create_directories(home);
-  // exec: the shell's pid becomes YADE's, so that a stop can signal it
-  return fmt::format(
-      "cd {} && echo $$ > engine.pid && HOME={} PYTHONPATH={}${{PYTHONPATH:+:$PYTHONPATH}} OMP_NUM_THREADS={} exec {} "
-      "-n -j{} -x {} scene.json{} 2>&1",
-      run::shell_quote(run_dir), run::shell_quote(home), run::shell_quote(paths::yade_python_dir()), threads,
-      run::shell_quote(env_or("BRASH_YADE_EXE", BRASH_YADE_EXE)), threads,
-      run::shell_quote(env_or("BRASH_YADE_SCRIPT", paths::yade_python_dir() / "brash_yade_scene.py")),
-      restart.empty() ? std::string() : " " + run::shell_quote(restart));
-}
-
-long read_pid(const fs::path& file) {
-  std::ifstream in(file);
-  long pid = 0;
-  return in >> pid && pid > 0 ? pid : 0;
+  return {run_dir,
+          fmt::format("HOME={} PYTHONPATH={}${{PYTHONPATH:+:$PYTHONPATH}} OMP_NUM_THREADS={}", run::shell_quote(home),
+                      run::shell_quote(paths::yade_python_dir()), threads),
+          fmt::format("{} -n -j{} -x {} scene.json{}", run::shell_quote(env_or("BRASH_YADE_EXE", BRASH_YADE_EXE)),
+                      threads,
+                      run::shell_quote(env_or("BRASH_YADE_SCRIPT", paths::yade_python_dir() / "brash_yade_scene.py")),
+                      restart.empty() ? std::string() : " " + run::shell_quote(restart))};
 }
 
 }  // namespace
@@ -146,17 +139,13 @@ std::vector<std::string> YadeEngine::restarts(const fs::path& run_dir) const {
 }
 
 // The scene writes hull_force_yade.csv as it goes (a resumed scene first rewrites it with the rows before its
-// restart point); the driver makes hull_force.csv of it.
+// restart point); the driver makes hull_force.csv of it. The scene's writes are buffered: its last line may be
+// cut (read while it writes, or the scene was killed) and is left out. No file yet: no rows.
 std::vector<run::ForceRow> YadeEngine::force_record(const fs::path& run_dir, double t_max_s) const {
-  std::ifstream in(run_dir / "hull_force_yade.csv");
-  std::vector<run::ForceRow> rows;
-  std::string line;
-  std::getline(in, line);  // header
-  while (std::getline(in, line)) {
-    run::ForceRow r;
-    if (std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf", &r.t_s, &r.fx_N, &r.fy_N, &r.fz_N) != 4) continue;  // a cut line
-    if (r.t_s <= t_max_s) rows.push_back(r);
-  }
+  const fs::path file = run_dir / "hull_force_yade.csv";
+  if (!fs::exists(file)) return {};
+  std::vector<run::ForceRow> rows = run::read_hull_force_csv(file, /*drop_unterminated_tail=*/true).rows;
+  std::erase_if(rows, [&](const run::ForceRow& r) { return r.t_s > t_max_s; });
   return rows;
 }
 
@@ -167,17 +156,10 @@ run::Attempt YadeEngine::advance(const fs::path& run_dir, const std::string& res
   std::ofstream log(run_dir / "log.txt", restart.empty() ? std::ios::trunc : std::ios::app);
   std::error_code ec;
   fs::remove(run_dir / "yade_summary.json", ec);  // written by the scene at its end: only this attempt's counts
-  const std::string cmd = yade_command(run_dir, threads_, restart);
-  FILE* pipe = ::popen(cmd.c_str(), "r");
-  if (!pipe) throw std::runtime_error("cannot start " + cmd);
   run::Attempt a;
-  long pid = 0, first_step = 0;
-  bool stop_sent = false;
-  char buf[8192];
-  while (std::fgets(buf, sizeof buf, pipe)) {
-    const std::string line = buf;
+  long first_step = 0;
+  const auto on_line = [&](const std::string& line) {
     log << line << std::flush;
-    if (pid == 0 && (pid = read_pid(run_dir / "engine.pid")) > 0) monitor.engine_process(pid);
     double t, duration;
     long step;
     if (std::sscanf(line.c_str(), "[brash-yade] t = %lf / %lf s step %ld", &t, &duration, &step) == 3) {
@@ -185,21 +167,19 @@ run::Attempt YadeEngine::advance(const fs::path& run_dir, const std::string& res
       a.t_last_s = t;
       if (a.t_first_s < 0) a.t_first_s = t;
       a.particle_steps = double(particles_) * double(step - first_step);
-      if (monitor.progress(t, a.particle_steps) && !stop_sent && pid > 0) {
-        stop_sent = true;
-        ::kill(static_cast<pid_t>(pid), SIGTERM);
-      }
-    } else if (std::sscanf(line.c_str(), "[brash-yade] resumed from %*s iteration %ld", &first_step) == 1) {
-      std::fputs(line.c_str(), stderr);
-    } else if (line.rfind("[brash-yade] ERROR", 0) == 0 && a.error.empty()) {
-      a.error = line.substr(20, line.find('\n') - 20);  // after "[brash-yade] ERROR: "
-    } else if (line.rfind("[brash-yade]", 0) == 0) {
-      std::fputs(line.c_str(), stderr);
+      return monitor.progress(t, a.particle_steps);
     }
-  }
-  const int rc = ::pclose(pipe);
-  monitor.engine_process(0);
-  const int exit_code = WIFEXITED(rc) ? WEXITSTATUS(rc) : 128;
+    if (std::sscanf(line.c_str(), "[brash-yade] resumed from %*s iteration %ld", &first_step) == 1)
+      std::fputs(line.c_str(), stderr);
+    else if (line.rfind("[brash-yade] ERROR", 0) == 0 && a.error.empty())
+      a.error = line.substr(20, line.find('\n') - 20);  // after "[brash-yade] ERROR: "
+    else if (line.rfind("[brash-yade]", 0) == 0)
+      std::fputs(line.c_str(), stderr);
+    return false;
+  };
+  const int exit_code =
+      run::run_child(yade_command(run_dir, threads_, restart), {[&](long pid) { monitor.engine_process(pid); }, on_line})
+          .code;
   const fs::path summary_file = run_dir / "yade_summary.json";
   if (fs::exists(summary_file)) {
     const auto summary = nlohmann::json::parse(std::ifstream(summary_file));

@@ -11,8 +11,9 @@ struct ForceHistory {
   bool tail_dropped = false;  // an unterminated last record was ignored (run still being written)
 };
 
-// Strict reader: bad numbers, wrong column count, NaN/inf, non-increasing time -> InputError naming
-// file and line. `run_in_progress`: drop an unterminated last line instead of parsing it.
+// Strict reader (brash::run::read_hull_force_csv; further named columns allowed): bad numbers, wrong column
+// count, NaN/inf, non-increasing time -> InputError naming file and line. `run_in_progress`: drop an
+// unterminated last line instead of parsing it.
 ForceHistory read_force_history(const std::filesystem::path& path, bool run_in_progress);
 
 // A fix ave/time file: '#' comment lines, then rows "TimeStep t fx fy fz" (whitespace-separated; e.g.

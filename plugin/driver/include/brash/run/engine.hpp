@@ -12,14 +12,10 @@
 #include <nlohmann/json.hpp>
 
 #include "brash/case.hpp"
+#include "brash/force_record.hpp"  // ForceRow
 #include "brash/packing.hpp"
 
 namespace brash::run {
-
-// One row of the hull-force record: the force of the ice on the hull, averaged over an output interval.
-struct ForceRow {
-  double t_s = 0, fx_N = 0, fy_N = 0, fz_N = 0;
-};
 
 enum class StopReason { None, EarlyStop, Signal };
 

@@ -1,5 +1,5 @@
 // Strict CSV scanning for run files; errors name file and line.
-#include <brash/post/csv.hpp>
+#include "brash/run_csv.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -9,9 +9,9 @@
 
 #include <fmt/format.h>
 
-#include <brash/error.hpp>
+#include "brash/error.hpp"
 
-namespace brash::post {
+namespace brash::run {
 namespace {
 
 std::string_view trim(std::string_view s) {
@@ -51,6 +51,22 @@ std::string read_text_file(const std::filesystem::path& path) {
   std::ostringstream ss;
   ss << in.rdbuf();
   return std::move(ss).str();
+}
+
+CsvHeader read_csv_header(std::string_view text) {
+  CsvHeader header;
+  std::vector<std::string_view> fields;
+  for (std::size_t pos = 0; pos < text.size();) {
+    const auto nl = text.find('\n', pos);
+    const auto line = text.substr(pos, nl == std::string_view::npos ? std::string_view::npos : nl - pos);
+    pos = nl == std::string_view::npos ? text.size() : nl + 1;
+    ++header.line;
+    if (trim(line).empty()) continue;
+    split_fields(line, fields);
+    header.fields.assign(fields.begin(), fields.end());
+    return header;
+  }
+  return {};
 }
 
 CsvScan scan_csv(const std::filesystem::path& path, std::string_view text,
@@ -105,4 +121,4 @@ double parse_finite(std::string_view field, const std::filesystem::path& path, s
   return v;
 }
 
-}  // namespace brash::post
+}  // namespace brash::run
