@@ -98,7 +98,10 @@ TEST_F(CaseGolden, EveryCaseFileResolvesAsBefore) {
     if (updating())
       write_text(golden, got);
     else
-      EXPECT_EQ(got, read_text(golden)) << rel << " (golden: " << golden << ")";
+      // a case file that names an absolute path (a run's resolved case) names it in its golden too: where that
+      // path lies in this checkout, it reads as {src} on both sides
+      EXPECT_EQ(got, replace_all(read_text(golden), kRepo.string(), "{src}"))
+          << rel << " (golden: " << golden << ")";
     ++checked;
   }
   EXPECT_GT(checked, 40);
