@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "brash/core/immersion.hpp"
+#include "../common/idle_pieces.hpp"
 #include "runner_case.h"
 
 namespace fs = std::filesystem;
@@ -124,29 +124,7 @@ TEST(LiggghtsGuardRunner, IdleFarFieldPiecesAreExportedFloatingAndInactive) {
   write_small_case(dir / "case", "0.05",
                    "speedups:\n  farfield: true\n  farfield_ahead_m: 0.1\n  farfield_every_steps: 100\n");
   ASSERT_EQ(run_case(dir), 0) << brash::test::read_text(dir / "run.log");
-  std::istringstream rows(brash::test::read_text(dir / "run/particles/particles_0000000500.csv"));
-  std::string line;
-  std::getline(rows, line);
-  ASSERT_EQ(line, "id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z,active");
-  int idle = 0, active = 0;
-  while (std::getline(rows, line)) {
-    std::vector<double> v;
-    std::istringstream cells(line);
-    for (std::string cell; std::getline(cells, cell, ',');) v.push_back(std::stod(cell));
-    ASSERT_EQ(v.size(), 13u) << line;
-    if (v[12] == 1) {
-      ++active;
-      continue;
-    }
-    ASSERT_EQ(v[12], 0.0) << line;
-    ++idle;
-    const double fraction = brash::core::immersion(v[4], v[3], 0.0).fraction;  // water level 0
-    EXPECT_GT(fraction, 0.0) << line;  // the bed floats
-    EXPECT_NEAR(v[8], fraction, 1e-5) << line;
-    for (int c = 9; c <= 11; ++c) EXPECT_EQ(v[c], 0.0) << line;
-  }
-  EXPECT_GT(idle, 0);
-  EXPECT_GT(active, 0);
+  brash::test::expect_idle_pieces_afloat(brash::test::read_text(dir / "run/particles/particles_0000000500.csv"));
   fs::remove_all(dir);
 }
 

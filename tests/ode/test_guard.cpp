@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "brash/case.hpp"
-#include "brash/core/immersion.hpp"
+#include "../common/idle_pieces.hpp"
 #include "brash/core/params.hpp"
 #include "brash/packing.hpp"
 #include "brash/settle.hpp"
@@ -348,31 +348,7 @@ TEST_F(OdeGuard, IdleFarFieldPiecesAreExportedFloatingAndInactive) {
   std::ofstream(dir / "case.yaml") << yaml;
   const Result r = run(dir, "0.02", "--dt 5e-4", "export");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  std::istringstream rows(slurp(r.run / "particles" / "particles_40.csv"));
-  std::string line;
-  std::getline(rows, line);
-  ASSERT_EQ(line, "id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z,active");
-  int idle = 0, active = 0;
-  while (std::getline(rows, line)) {
-    std::vector<double> v;
-    std::istringstream cells(line);
-    for (std::string cell; std::getline(cells, cell, ',');) v.push_back(std::stod(cell));
-    ASSERT_EQ(v.size(), 13u) << line;
-    if (v[12] == 1) {
-      ++active;
-      continue;
-    }
-    ASSERT_EQ(v[12], 0.0) << line;
-    ++idle;
-    const double fraction = brash::core::immersion(v[4], v[3], 0.0).fraction;  // water level 0
-    EXPECT_GT(fraction, 0.0) << line;  // the bed floats
-    EXPECT_NEAR(v[8], fraction, 1e-5) << line;
-    EXPECT_EQ(v[9], 0.0) << line;
-    EXPECT_EQ(v[10], 0.0) << line;
-    EXPECT_EQ(v[11], 0.0) << line;
-  }
-  EXPECT_GT(idle, 0);
-  EXPECT_GT(active, 0);
+  brash::test::expect_idle_pieces_afloat(slurp(r.run / "particles" / "particles_40.csv"));
 }
 
 // bench-ode --scene-from starts from another run's particle dump (its pieces, with their velocities) with the hull
