@@ -24,7 +24,7 @@
                                    d < r, r + d with the centre inside; 0.5 = centre on the surface)
 
    Always: a non-finite (NaN/Inf) position, velocity, angular velocity or force component stops the run.
-   The per-atom checks are brash::guard::check_piece (common/include/brash/guard.hpp), the same function the
+   The per-atom checks are brash::guard::check_piece (run/include/brash/run/guard.hpp), the same function the
    ODE and YADE paths call; this fix adds the MPI reduction (lowest offending atom id over all ranks).
    The hull query only runs for atoms within their radius of the hull's bounding box.
    Every stop is error->all naming the step, the atom id and the cause, e.g.
@@ -38,7 +38,7 @@
 
 #include <memory>
 
-#include "brash/guard.hpp"
+#include "brash/run/guard.hpp"
 #include "brash/hull/proximity.hpp"
 #include "fix.h"
 #include "guard_args.h"

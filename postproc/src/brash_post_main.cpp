@@ -13,7 +13,7 @@
 #include <fmt/format.h>
 
 #include <brash/error.hpp>
-#include <brash/run_layout.hpp>
+#include <brash/run/run_layout.hpp>
 #include <brash/stats/early_stop.hpp>
 #include <brash/stats/paired.hpp>
 #include <brash/post/ensemble.hpp>

@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 
 #include <brash/error.hpp>
-#include <brash/force_record.hpp>
+#include <brash/run/force_record.hpp>
 #include <brash/post/csv.hpp>
 
 namespace brash::post {

@@ -13,7 +13,7 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
-#include <brash/run_layout.hpp>
+#include <brash/run/run_layout.hpp>
 #ifdef BRASH_POST_HAVE_HULL
 #include <brash/hull/mesh.hpp>
 #endif

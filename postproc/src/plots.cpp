@@ -11,7 +11,7 @@
 
 #include <fmt/format.h>
 
-#include <brash/run_layout.hpp>
+#include <brash/run/run_layout.hpp>
 #include <brash/post/csv.hpp>
 
 namespace brash::post {

@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "brash/error.hpp"
-#include "brash/run_layout.hpp"
+#include "brash/run/run_layout.hpp"
 
 namespace fs = std::filesystem;
 

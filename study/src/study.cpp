@@ -11,7 +11,7 @@
 #include <memory>
 
 #include "brash/error.hpp"
-#include "brash/run_layout.hpp"
+#include "brash/run/run_layout.hpp"
 #include "brash/study/manifest.hpp"
 #include "brash/study/process.hpp"
 #include "brash/study/runner.hpp"

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "../common/idle_pieces.hpp"
+#include "../run/idle_pieces.hpp"
 #include "runner_case.h"
 
 namespace fs = std::filesystem;

@@ -19,10 +19,10 @@
 #include <vector>
 
 #include "brash/case.hpp"
-#include "../common/idle_pieces.hpp"
+#include "../run/idle_pieces.hpp"
 #include "brash/core/params.hpp"
 #include "brash/packing.hpp"
-#include "brash/settle.hpp"
+#include "brash/run/settle.hpp"
 
 namespace fs = std::filesystem;
 

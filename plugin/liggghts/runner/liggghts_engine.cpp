@@ -11,11 +11,11 @@
 #include <sstream>
 
 #include "brash/case_hull_flow.hpp"
-#include "brash/child_process.hpp"
+#include "brash/run/child_process.hpp"
 #include "brash/error.hpp"
 #include "brash/hull/panel_flow.hpp"
-#include "brash/run_layout.hpp"
-#include "brash/runner_setup.hpp"
+#include "brash/run/run_layout.hpp"
+#include "brash/run/runner_setup.hpp"
 
 namespace fs = std::filesystem;
 

@@ -8,7 +8,7 @@
 
 #include "brash/case_fluid.hpp"
 #include "brash/core/far_field.hpp"
-#include "brash/guard.hpp"
+#include "brash/run/guard.hpp"
 #include "icefluid_arguments.h"
 
 namespace brash::liggghts {

@@ -50,7 +50,7 @@ hull::Mesh half_hull(const hull::Mesh& mesh);
 // The input script; outputs (relative to the run dir): hull_force.raw, particles/dump.*.txt, restart/.
 std::string input_script(const Case& c, const Box& box, const SceneOptions& opt);
 
-// brash-settle's deck (brash/settle.hpp): the packing (packing.data) with gravity, the fluid forces (no hull's
+// brash-settle's deck (brash/run/settle.hpp): the packing (packing.data) with gravity, the fluid forces (no hull's
 // flow), the side walls and walls at both channel ends, no hull; run in chunks of chunk_steps until the pieces' rms
 // speed is below ice.settle_speed_m_s or max_chunks have run; then prints "brash-settle: t T vrms V" and writes
 // settled.dump (id x y z radius, sorted by id).

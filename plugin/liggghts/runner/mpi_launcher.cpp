@@ -9,7 +9,7 @@
 #include <unistd.h>
 
 #include "brash/error.hpp"
-#include "brash/runner_setup.hpp"
+#include "brash/run/runner_setup.hpp"
 
 namespace brash::liggghts {
 

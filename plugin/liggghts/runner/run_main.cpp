@@ -9,10 +9,10 @@
 
 #include "brash/case.hpp"
 #include "brash/error.hpp"
-#include "brash/force_record.hpp"
+#include "brash/run/force_record.hpp"
 #include "brash/run/driver.hpp"
 #include "brash/run/driver_cli.hpp"
-#include "brash/run_layout.hpp"
+#include "brash/run/run_layout.hpp"
 #include "liggghts_engine.h"
 #include "mpi_launcher.h"
 

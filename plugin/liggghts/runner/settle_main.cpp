@@ -1,6 +1,6 @@
 // brash-settle CASE_FILE --out SETTLED_CSV: the case's packing floated and settled with LIGGGHTS on one rank (no
 // ship, closed channel ends) until the pieces' rms speed is below ice.settle_speed_m_s, written as a packing file
-// (id,x,y,z,diameter; ids kept). The run driver calls it for ice.settle (brash/settle.hpp) and caches the file.
+// (id,x,y,z,diameter; ids kept). The run driver calls it for ice.settle (brash/run/settle.hpp) and caches the file.
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
@@ -15,13 +15,13 @@
 #include <utility>
 
 #include "brash/case.hpp"
-#include "brash/child_process.hpp"
+#include "brash/run/child_process.hpp"
 #include "brash/error.hpp"
-#include "brash/guard.hpp"
+#include "brash/run/guard.hpp"
 #include "brash/packing.hpp"
-#include "brash/run_layout.hpp"
-#include "brash/runner_setup.hpp"
-#include "brash/settle.hpp"
+#include "brash/run/run_layout.hpp"
+#include "brash/run/runner_setup.hpp"
+#include "brash/run/settle.hpp"
 #include "liggghts_input.h"
 
 namespace fs = std::filesystem;

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "brash/core/fnv1a.hpp"
-#include "brash/run_layout.hpp"
+#include "brash/run/run_layout.hpp"
 
 namespace brash::ode::restart {
 namespace fs = std::filesystem;

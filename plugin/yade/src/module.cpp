@@ -27,7 +27,7 @@
 #include "brash/core/fluid.hpp"
 #include "brash/core/params.hpp"
 #include "brash/core/reference.hpp"
-#include "brash/guard.hpp"
+#include "brash/run/guard.hpp"
 #include "brash/hull/mesh.hpp"
 #include "brash/hull/proximity.hpp"
 

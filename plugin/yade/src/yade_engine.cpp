@@ -9,14 +9,14 @@
 #include <iostream>
 #include <sstream>
 
-#include "brash/child_process.hpp"
+#include "brash/run/child_process.hpp"
 #include "brash/error.hpp"
-#include "brash/force_record.hpp"
-#include "brash/guard.hpp"
+#include "brash/run/force_record.hpp"
+#include "brash/run/guard.hpp"
 #include "brash/paths.hpp"
-#include "brash/run_layout.hpp"
+#include "brash/run/run_layout.hpp"
 #include "brash/run/driver.hpp"
-#include "brash/runner_setup.hpp"
+#include "brash/run/runner_setup.hpp"
 
 namespace fs = std::filesystem;
 

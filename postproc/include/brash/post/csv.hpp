@@ -1,7 +1,7 @@
-// Strict CSV scanning for run files: the run layer's scanner (brash/run_csv.hpp), named in brash::post for the
+// Strict CSV scanning for run files: the run layer's scanner (brash/run/run_csv.hpp), named in brash::post for the
 // postprocessor's readers (particle snapshots, particles/index.csv).
 #pragma once
-#include <brash/run_csv.hpp>
+#include <brash/run/run_csv.hpp>
 
 namespace brash::post {
 

@@ -1,0 +1,2 @@
+#pragma once
+// A geometry header of the fixture tree.
