@@ -1,11 +1,12 @@
 // End to end: the default case exactly as `make run` runs it (scripts/brash-run cases/jbc_quick: packing,
 // LIGGGHTS, brash-post), into a temporary runs root. Its report must pass its own checks (no "Read first"
 // note: a blocking plateau, the window's halves within their CI, a complete record), use the default fluid
-// model and compare with no published value (the quick case declares none); the run layout, the ParaView
+// model, give the reference run's numbers to the printed digit and compare with no published value (the quick case declares none); the run layout, the ParaView
 // files and report.json carry everything a user reads.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -72,6 +73,14 @@ TEST(Pipeline, DefaultCaseAsMakeRunGivesAnUnflaggedReport) {
   EXPECT_NEAR(r["resistance_full_kN"].get<double>(),
               r["resistance_model_N"]["mean"].get<double>() * 28.5 * 28.5 * 28.5 / 1000, 1e-6);
   EXPECT_GT(r["fsicr"]["R_CH_kN"].get<double>(), 100.0);
+  // Behaviour kept: the report gives the resistance of make run's reference run (evidence/quick-liggghts-both,
+  // same case, same ranks) to the printed digit, model and full scale, and the same FSICR R_CH.
+  const auto ref = read_json(fs::path(BRASH_SOURCE_DIR) / "evidence/quick-liggghts-both/report.json");
+  const auto printed4 = [](double v) { return std::to_string(std::lround(v * 1e4)); };  // "17.0433 ± 0.2867 N"
+  EXPECT_EQ(printed4(r["resistance_model_N"]["mean"]), printed4(ref["resistance_model_N"]["mean"]));
+  EXPECT_EQ(printed4(r["resistance_model_N"]["ci95"]), printed4(ref["resistance_model_N"]["ci95"]));
+  EXPECT_EQ(std::lround(r["resistance_full_kN"].get<double>() * 10), std::lround(ref["resistance_full_kN"].get<double>() * 10));
+  EXPECT_EQ(std::lround(r["fsicr"]["R_CH_kN"].get<double>() * 10), std::lround(ref["fsicr"]["R_CH_kN"].get<double>() * 10));
   // The ice stays within the contact band (hull.band_m) in the snapshots: nothing passes under it.
   ASSERT_TRUE(r.contains("contact_band"));
   EXPECT_TRUE(r["contact_band"]["ok"].get<bool>()) << r["contact_band"].dump();
