@@ -13,6 +13,8 @@
 #include <tuple>
 #include <utility>
 
+#include <unistd.h>
+
 #include "brash/error.hpp"
 #include "brash/packing.hpp"
 
@@ -78,6 +80,14 @@ bool given(const CaseOverrides& overrides, std::string_view key) {
   return std::any_of(overrides.begin(), overrides.end(), [&](const CaseOverride& o) { return o.first == key; });
 }
 
+// Whether files can be made at `file`: its nearest existing folder is writable (an installed case's folder is not).
+bool can_write_at(const fs::path& file) {
+  fs::path dir = file.parent_path();
+  std::error_code ec;
+  while (!dir.empty() && !fs::exists(dir, ec) && dir != dir.parent_path()) dir = dir.parent_path();
+  return !dir.empty() && ::access(dir.c_str(), W_OK) == 0;
+}
+
 // The base's hull file and packing, seen from another folder (brash/case_derive.hpp, "Paths").
 void fix_paths(YAML::Node root, const Case& base, const fs::path& base_dir, const CaseOverrides& overrides,
                const Case& derived) {
@@ -91,7 +101,8 @@ void fix_paths(YAML::Node root, const Case& base, const fs::path& base_dir, cons
   }
   if (!given(overrides, "ice.packing_file"))
     root["ice"]["packing_file"] =
-        same_packing_inputs(base, derived) ? base.ice.packing_file.string() : std::string("generated/packing.csv");
+        same_packing_inputs(base, derived) && can_write_at(base.ice.packing_file) ? base.ice.packing_file.string()
+                                                                                  : std::string("generated/packing.csv");
 }
 
 // Keys of how a run is computed, not of the hull, speed, ice or fluid it computes: a variant that changes only

@@ -1,6 +1,6 @@
 // brash-case new NAME [--speed ... --scale ... --width ... ...]: makes a new case folder
-// <cases-dir>/NAME/case.yaml from a template case (default: the paper case) with the given values
-// replaced, then validates it with the loader (the folder is removed again if it is invalid).
+// <cases-dir>/NAME/case.yaml from a template case (default: the quick case; --template jbc_ia_5kn: the paper case)
+// with the given values replaced, then validates it with the loader (the folder is removed again if it is invalid).
 // brash-case new NAME --hull FILE --draft T: the same around the user's own hull (docs/own_hull.md): the mesh is
 // checked and measured with the hull library (closed, outward, units, frame, hydrostatics, FSICR parameters),
 // refused with the reason when it fails, copied into the case folder as STL, and the hull keys are filled in.
@@ -253,11 +253,26 @@ struct NewCaseOptions {
   bool force = false;
 };
 
+// A case argument: its case.yaml, or the folder holding it.
+fs::path case_file_of(const std::string& arg) {
+  return fs::is_directory(arg) ? fs::path(arg) / "case.yaml" : fs::path(arg);
+}
+
+// --template: a case.yaml, its folder, or the name of a case of brash's data (cases/NAME: jbc_quick, jbc_ia_5kn);
+// without it the quick case, small and fast (a new case is tried before it is made large).
+fs::path template_file(const std::string& arg) {
+  if (arg.empty()) return brash::paths::data_file("cases/jbc_quick/case.yaml", "the default template");
+  std::error_code ec;
+  if (fs::exists(arg, ec)) return case_file_of(arg);
+  if (std::regex_match(arg, std::regex("[A-Za-z0-9_.-]+")))
+    return brash::paths::data_file(fs::path("cases") / arg / "case.yaml", "--template " + arg + ":");
+  throw brash::InputError("--template " + arg + ": no such case file or folder");
+}
+
 int make_case(const NewCaseOptions& o) {
   if (!std::regex_match(o.name, std::regex("[A-Za-z0-9_.-]+")) || o.name == "." || o.name == "..")
     throw brash::InputError(fmt::format("case name '{}': use letters, digits, '_', '-', '.'", o.name));
-  const fs::path templ = o.templ.empty() ? brash::paths::data_file("cases/jbc_ia_5kn/case.yaml", "the default template")
-                                     : fs::path(o.templ);
+  const fs::path templ = template_file(o.templ);
   const brash::Case base = brash::load_case(templ);  // the template itself must be valid
   YAML::Node n = YAML::LoadFile(templ.string());
   if (o.hull.empty() && (o.draft || o.lpp))
@@ -286,9 +301,9 @@ int make_case(const NewCaseOptions& o) {
 
   n["name"] = o.name;
   n["description"] = !o.description.empty() ? o.description
-                     : own ? fmt::format("made by brash-case from {} with the hull {}", templ.filename().string(),
+                     : own ? fmt::format("made by brash-case from {} with the hull {}", base.name,
                                          own->source.filename().string())
-                           : fmt::format("made by brash-case from {}", templ.filename().string());
+                           : fmt::format("made by brash-case from {}", base.name);
   // New scale: hull dimensions, the ice and (unless given) speed follow Froude similarity from the template (the
   // user's hull keeps its measured dimensions; the speed keeps the template's full-scale speed, the ice its
   // full-scale thickness and piece size, which FSICR's R_CH and the comparison with it assume).
@@ -422,10 +437,6 @@ struct DeriveOptions {
   bool force = false;
 };
 
-fs::path case_file_of(const std::string& arg) {
-  return fs::is_directory(arg) ? fs::path(arg) / "case.yaml" : fs::path(arg);
-}
-
 int derive(const DeriveOptions& o) {
   brash::CaseOverrides overrides;
   for (const auto& s : o.sets) overrides.push_back(brash::parse_case_override(s));
@@ -500,7 +511,7 @@ int main(int argc, char** argv) {
   CLI::App* nw = app.add_subcommand("new", "write <cases-dir>/NAME/case.yaml from a template with values replaced");
   nw->add_option("NAME", o.name, "case name (folder name)")->required();
   nw->add_option("--cases-dir", o.cases_dir, "folder holding the case folders")->capture_default_str();
-  nw->add_option("--template", o.templ, "template case.yaml (default: the paper case cases/jbc_ia_5kn)");
+  nw->add_option("--template", o.templ, "template: a case.yaml, its folder, or a case of brash's data by name (jbc_ia_5kn: the paper case); default: the quick case jbc_quick");
   nw->add_option("--description", o.description, "free text");
   nw->add_option("--speed", o.speed, "ship speed [m/s] (model scale)");
   nw->add_option("--scale", o.scale, "scale lambda (hull dimensions, speed and ice scaled from the template by "

@@ -3,7 +3,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "brash/case.hpp"
@@ -96,6 +98,44 @@ TEST(DeriveCase, PackingFollowsWhatThePackingDependsOn) {
                                       out / "e")
                 .ice.packing_file,
             base.ice.packing_file);
+}
+
+// A base whose folder cannot be written (an installed case): the same ice is made in the derived case's own folder,
+// since the runners make a missing packing and its settled bed beside it. Derived by a user who cannot write the
+// base's folder: a forked process that drops to "nobody" when the tests run as root.
+TEST(DeriveCase, ReadOnlyBaseGivesThePackingToTheDerivedFolder) {
+  const fs::path dir = temp_dir("readonly");
+  const std::string quick_text = [] {
+    std::ifstream in(kQuick);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }();
+  write(dir / "installed/case.yaml", quick_text);
+  write(dir / "mine/case.yaml", quick_text);
+  fs::create_directories(dir / "user");
+  fs::permissions(dir / "installed", fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                                         fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
+  fs::permissions(dir, fs::perms::all);
+  fs::permissions(dir / "user", fs::perms::all);
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    if (::geteuid() == 0 && (::setgid(65534) != 0 || ::setuid(65534) != 0)) ::_exit(3);
+    try {
+      const brash::Case d = brash::write_derived_case(dir / "installed/case.yaml", {{"ice.seed", "1"}}, dir / "user/v");
+      ::_exit(d.ice.packing_file == fs::absolute(dir / "user/v/generated/packing.csv").lexically_normal() ? 0 : 1);
+    } catch (...) {
+      ::_exit(2);
+    }
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "1: packing not in the derived folder, 2: refused, 3: could not drop to nobody";
+  // the same base in a folder its user can write keeps sharing the base's packing
+  EXPECT_EQ(brash::write_derived_case(dir / "mine/case.yaml", {{"ice.seed", "1"}}, dir / "own").ice.packing_file,
+            fs::absolute(dir / "mine/generated/packing.csv").lexically_normal());
+  fs::permissions(dir / "installed", fs::perms::owner_all);
+  fs::remove_all(dir);
 }
 
 TEST(DeriveCase, RelativePathsOfTheBaseFolderBecomeAbsolute) {

@@ -122,7 +122,7 @@ TEST(BrashPack, WritesCsvAndJsonForACase) {
 
 TEST(BrashCase, NewCaseFromParameters) {
   const fs::path dir = temp_dir("new");
-  const std::string cmd = (kBin / "brash-case").string() + " new my_case --cases-dir " + dir.string() +
+  const std::string cmd = (kBin / "brash-case").string() + " new my_case --template jbc_ia_5kn --cases-dir " + dir.string() +
                           " --speed 0.3 --scale 28.5 --width 1.8 --thickness 0.05 --diameter 0.025"
                           " --friction-ice 1.0 --friction-hull 0.05 --fluid-model drag --treatment explicit"
                           " --duration 10 --band 0.3 0.1";
@@ -133,7 +133,7 @@ TEST(BrashCase, NewCaseFromParameters) {
   EXPECT_DOUBLE_EQ(c.ship.scale_lambda, 28.5);
   EXPECT_DOUBLE_EQ(c.hull.lpp_m, 7.0);
   EXPECT_DOUBLE_EQ(c.channel.width_m, 1.8);
-  EXPECT_DOUBLE_EQ(c.channel.length_m, 21.0);  // from the template (the paper case)
+  EXPECT_DOUBLE_EQ(c.channel.length_m, 21.0);  // from the template asked for by name (the paper case)
   EXPECT_DOUBLE_EQ(c.ice.thickness_m, 0.05);
   EXPECT_DOUBLE_EQ(c.ice.diameter_mean_m, 0.025);
   EXPECT_DOUBLE_EQ(c.ice.diameter_sd_m, 0.00125);
@@ -165,7 +165,7 @@ TEST(BrashCase, NewScaleScalesTheIceByFroude) {
   const fs::path dir = temp_dir("scale_ice");
   const brash::Case paper = brash::load_case(kRepo / "cases/jbc_ia_5kn/case.yaml");
   ASSERT_EQ(paper.ship.scale_lambda, 28.5);
-  ASSERT_EQ(run((kBin / "brash-case").string() + " new s50 --cases-dir " + dir.string() + " --scale 50",
+  ASSERT_EQ(run((kBin / "brash-case").string() + " new s50 --template jbc_ia_5kn --cases-dir " + dir.string() + " --scale 50",
                 dir / "log.txt"), 0) << slurp(dir / "log.txt");
   const brash::Case s = brash::load_case(dir / "s50/case.yaml");
   const double k = 28.5 / 50;
@@ -176,12 +176,36 @@ TEST(BrashCase, NewScaleScalesTheIceByFroude) {
   EXPECT_NEAR(s.run.timestep_s, paper.run.timestep_s * k, 1e-15);  // the same fraction of the pieces' Rayleigh time
   EXPECT_NE(slurp(dir / "log.txt").find("the ice scaled by Froude"), std::string::npos) << slurp(dir / "log.txt");
   // ice given on the command line wins
-  ASSERT_EQ(run((kBin / "brash-case").string() + " new t50 --cases-dir " + dir.string() +
+  ASSERT_EQ(run((kBin / "brash-case").string() + " new t50 --template jbc_ia_5kn --cases-dir " + dir.string() +
                     " --scale 50 --thickness 0.03 --diameter 0.012",
                 dir / "log2.txt"), 0) << slurp(dir / "log2.txt");
   const brash::Case t = brash::load_case(dir / "t50/case.yaml");
   EXPECT_DOUBLE_EQ(t.ice.thickness_m, 0.03);
   EXPECT_DOUBLE_EQ(t.ice.diameter_mean_m, 0.012);
+}
+
+// The default template is the quick case (small and fast); the paper case by name; a template by its folder.
+TEST(BrashCase, NewCaseTemplateByDefaultNameOrFolder) {
+  const fs::path dir = temp_dir("templates");
+  const std::string bc = (kBin / "brash-case").string() + " new ";
+  ASSERT_EQ(run(bc + "q --cases-dir " + dir.string(), dir / "log.txt"), 0) << slurp(dir / "log.txt");
+  const brash::Case quick = brash::load_case(kRepo / "cases/jbc_quick/case.yaml");
+  const brash::Case q = brash::load_case(dir / "q/case.yaml");
+  EXPECT_EQ(q.channel.length_m, quick.channel.length_m);
+  EXPECT_EQ(q.ice.diameter_mean_m, quick.ice.diameter_mean_m);
+  EXPECT_EQ(q.run.duration_s, quick.run.duration_s);
+  EXPECT_EQ(q.description, "made by brash-case from jbc_quick");
+  ASSERT_EQ(run(bc + "p --template jbc_ia_5kn --cases-dir " + dir.string(), dir / "log2.txt"), 0)
+      << slurp(dir / "log2.txt");
+  const brash::Case paper = brash::load_case(kRepo / "cases/jbc_ia_5kn/case.yaml");
+  EXPECT_EQ(brash::load_case(dir / "p/case.yaml").channel.length_m, paper.channel.length_m);
+  // a folder (not only its case.yaml) and a name that is neither
+  ASSERT_EQ(run(bc + "f --template " + (kRepo / "cases/jbc_ia_5kn").string() + " --cases-dir " + dir.string(),
+                dir / "log3.txt"), 0) << slurp(dir / "log3.txt");
+  EXPECT_EQ(brash::load_case(dir / "f/case.yaml").ice.diameter_mean_m, paper.ice.diameter_mean_m);
+  EXPECT_EQ(run(bc + "n --template no_such_case --cases-dir " + dir.string(), dir / "log4.txt"), 2);
+  EXPECT_NE(slurp(dir / "log4.txt").find("--template no_such_case"), std::string::npos) << slurp(dir / "log4.txt");
+  EXPECT_FALSE(fs::exists(dir / "n"));
 }
 
 TEST(BrashCase, InvalidValueLeavesNoFolder) {
@@ -249,12 +273,12 @@ TEST(BrashCase, ReferencesOnlyWhereTheyDescribeTheCase) {
   };
   for (const std::string opts : {"--speed 0.3", "--scale 50", "--thickness 0.05", "--ice-class IB", "--width 3"}) {
     const std::string name = "new" + std::to_string(opts.size()) + opts.substr(2, 3);
-    const auto [c, log] = made("new " + name + " --cases-dir " + dir.string() + " " + opts, name);
+    const auto [c, log] = made("new " + name + " --template jbc_ia_5kn --cases-dir " + dir.string() + " " + opts, name);
     EXPECT_FALSE(c.references.declared()) << opts;
     EXPECT_NE(log.find("references"), std::string::npos) << opts << ": " << log;
     EXPECT_EQ(slurp(dir / name / "case.yaml").find("393"), std::string::npos) << opts;
   }
-  const auto [same, same_log] = made("new same --cases-dir " + dir.string() + " --duration 10", "same");
+  const auto [same, same_log] = made("new same --template jbc_ia_5kn --cases-dir " + dir.string() + " --duration 10", "same");
   EXPECT_EQ(same.references, brash::load_case(kRepo / "cases/jbc_ia_5kn/case.yaml").references);
   for (const std::string key : {"ship.speed_m_s=0.3", "hull.draft_m=0.4", "ice.diameter_mean_m=0.02",
                                 "friction.ice_hull=0.2", "fluid.drag_coefficient=1.0"}) {

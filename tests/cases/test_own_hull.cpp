@@ -73,11 +73,12 @@ fs::path write_box_obj(const fs::path& file, double scale = 1.0, bool flipped = 
 
 }  // namespace
 
-// The JBC STL the build makes, through --hull: the paper case's hull keys come back from the measurement alone.
+// The JBC STL the build makes, through --hull on the paper case as template: the paper case's hull keys come back
+// from the measurement alone.
 TEST(OwnHull, JbcStlBecomesACaseWithItsMeasuredKeys) {
   ASSERT_TRUE(fs::exists(kJbc)) << kJbc;
   const fs::path dir = temp_dir("jbc");
-  const Result r = new_case(dir, "my_jbc", "--hull '" + kJbc.string() + "' --draft 0.4125 --lpp 7.0");
+  const Result r = new_case(dir, "my_jbc", "--template jbc_ia_5kn --hull '" + kJbc.string() + "' --draft 0.4125 --lpp 7.0");
   ASSERT_EQ(r.rc, 0) << r.out;
   const fs::path copy = dir / "my_jbc" / kJbc.filename();
   ASSERT_TRUE(fs::exists(copy));
@@ -140,7 +141,7 @@ TEST(OwnHull, BoxObjBecomesAnStlCase) {
   EXPECT_DOUBLE_EQ(c.hull.lpp_m, 2.0);
   EXPECT_DOUBLE_EQ(c.hull.beam_m, 0.6);
   EXPECT_DOUBLE_EQ(c.channel.width_m, 1.2);
-  EXPECT_DOUBLE_EQ(c.channel.length_m, 6.0);
+  EXPECT_DOUBLE_EQ(c.channel.length_m, 2.0);  // one ship length, as the default template (the quick case)
   EXPECT_LT(c.hull.start_x_m + 2.0, 0.0);  // the bow starts outside the ice
   EXPECT_DOUBLE_EQ(c.ship.scale_lambda, 20.0);
   EXPECT_DOUBLE_EQ(c.ship.speed_m_s, 0.3);

@@ -7,8 +7,9 @@
 //     brash::hull_file_candidates searches) stays as it is and is found in the same place;
 //   - ice.packing_file: the base's packing (made absolute) when the derived case packs the same ice as the base (every
 //     key the packing depends on, brash::packing_request: channel.*, ice.*, water.density_kg_m3, water.level_m, has
-//     its base value), else `generated/packing.csv` of the derived case's folder, which the runners generate
-//     (brash-pack) when it is missing;
+//     its base value) and the base's packing folder can be written (the packing and its settled bed are made there
+//     when missing), else `generated/packing.csv` of the derived case's folder, which the runners generate
+//     (brash-pack) when it is missing: a case derived from a read-only installed case makes its ice in its own folder;
 //   - a hull.file or ice.packing_file given as an override is taken as given (relative to the derived case's folder,
 //     as in any case file).
 // References: the base's references: section is dropped when the variant changes a key they depend on
