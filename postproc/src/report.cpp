@@ -77,7 +77,7 @@ WindowSelection select_window(std::span<const double> t, std::array<double, 2> w
   if (s.i1 < s.i0 + 2) {  // nothing usable inside the window: take the last half of the record
     s.fallback = true;
     s.i1 = t.size();
-    s.i0 = t.size() / 2;
+    s.i0 = std::min(t.size() / 2, t.size() - 2);  // two samples at least (a record of two has a one-sample half)
   }
   s.used_s = {t[s.i0], t[s.i1 - 1]};
   return s;

@@ -5,7 +5,8 @@
 #  3. from a folder outside the repository, with `env -i` (no variable pointing into the source or build tree):
 #     brash-liggghts-run on <prefix>/share/brash/cases/jbc_narrow for 0.05 s on 1 rank -> meta.json complete and
 #     report.json; brash-case new (default template from the data folder); brash-hull jbc (default data folder);
-#     a wrong BRASH_DATA_DIR gives an error naming it;
+#     a wrong BRASH_DATA_DIR gives an error naming it; the steps of docs/own_hull.md and a derived installed case as
+#     a user who cannot write the install;
 #  4. find_package(brash) in a tiny CMake project: configure, build, run a program linking brash::core.
 set -u
 src=$(cd "${1:?usage: install_test.sh SOURCE_DIR BUILD_DIR CMAKE CXX}" && pwd -P)
@@ -85,6 +86,40 @@ rc=$?
 [ $rc -eq 2 ] || bad "brash-case new with an empty BRASH_DATA_DIR exited $rc, expected 2"
 grep -q 'BRASH_DATA_DIR' "$tmp/nodata.log" && grep -qF "$tmp/empty" "$tmp/nodata.log" ||
   bad "the missing-template message names neither BRASH_DATA_DIR nor the folder: $(cat "$tmp/nodata.log")"
+
+# 3b. the docs' first steps (docs/own_hull.md "In five commands", a derived installed case) as a user who cannot
+# write the install: "nobody" when the test runs as root, else the install made read-only.
+uwork=$tmp/user
+mkdir -p "$uwork"
+if [ "$(id -u)" -eq 0 ]; then
+  chmod 755 "$tmp"
+  chown 65534:65534 "$uwork"
+  as_user() { (cd "$uwork" && env -i PATH=/usr/bin:/bin HOME="$uwork" \
+                 setpriv --reuid=65534 --regid=65534 --clear-groups "$@"); }
+else
+  chmod -R a-w "$prefix"
+  trap 'chmod -R u+w "$prefix"; rm -rf "$tmp"' EXIT
+  as_user() { (cd "$uwork" && env -i PATH=/usr/bin:/bin HOME="$uwork" "$@"); }
+fi
+as_user touch "$prefix/share/brash/cases/probe" 2> /dev/null && bad "the install is writable by the user of step 3b"
+hull=$prefix/share/brash/hull_meshes/jbc_panamax_model.stl
+as_user "$prefix/bin/brash-hull" check "$hull" --draft 0.4125 > "$tmp/check.json" 2> "$tmp/check.log" ||
+  { cat "$tmp/check.log"; bad "own_hull.md: brash-hull check"; }
+as_user "$prefix/bin/brash-case" new my_ship --hull "$hull" --draft 0.4125 --scale 30 --speed 0.45 --duration 20 \
+  > "$tmp/new.log" 2>&1 || { cat "$tmp/new.log"; bad "own_hull.md: brash-case new --hull"; }
+if [ -x "$prefix/bin/brash-ode" ]; then
+  # the quick look, shortened from --duration 2 to a few steps
+  as_user "$prefix/bin/brash-ode" cases/my_ship --duration 0.02 --no-progress > "$tmp/ode.log" 2>&1 ||
+    { tail -n 20 "$tmp/ode.log"; bad "own_hull.md: brash-ode cases/my_ship"; }
+  grep -Eq '"status": *"complete"' "$uwork"/runs/my_ship-ode-*/meta.json 2> /dev/null ||
+    bad "own_hull.md: the ODE quick look left no complete run in runs/"
+  # a variant of an installed case with the same ice: its packing is made in its own folder, not the install's
+  as_user "$prefix/bin/brash-case" derive "$prefix/share/brash/cases/jbc_narrow" --set friction.ice_hull=0.2 \
+    --out variant > "$tmp/derive.log" 2>&1 || { cat "$tmp/derive.log"; bad "brash-case derive of an installed case"; }
+  as_user "$prefix/bin/brash-ode" variant --duration 0.02 --no-progress > "$tmp/variant.log" 2>&1 ||
+    { tail -n 20 "$tmp/variant.log"; bad "brash-ode on a case derived from an installed case"; }
+  [ -f "$uwork/variant/generated/packing.csv" ] || bad "the derived case's packing is not in its own folder"
+fi
 
 # 4. find_package(brash) from a tiny project
 proj=$tmp/consumer

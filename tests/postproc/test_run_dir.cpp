@@ -359,6 +359,16 @@ TEST(RunDir, ShortRunShortensWindowAndSaysSo) {
   fs::remove_all(dir);
 }
 
+// A record of two or three samples before the window (a run of a few steps): the last two are averaged, not one.
+TEST(RunDir, FewSamplesBeforeTheWindowAverageTheLastTwo) {
+  for (const std::vector<double>& t : {std::vector<double>{0.01, 0.02}, std::vector<double>{0.01, 0.02, 0.03}}) {
+    const auto w = brash::post::select_window(t, {5.5, 11.0}, "hull_force.csv");
+    EXPECT_TRUE(w.fallback);
+    EXPECT_EQ(w.i1, t.size());
+    EXPECT_EQ(w.i1 - w.i0, 2u) << t.size();
+  }
+}
+
 TEST(RunDir, RunStillBeingWrittenUsesCompleteRecordsOnly) {
   const auto dir = scratch("running");
   SyntheticRun r;
