@@ -88,6 +88,27 @@ bool can_write_at(const fs::path& file) {
   return !dir.empty() && ::access(dir.c_str(), W_OK) == 0;
 }
 
+// A run made shorter than its base's averaging window (run.duration_s set, run.window_s not) keeps its window inside
+// the run: [min(start, duration / 2), duration] (brash/case_derive.hpp, "Window"). A base without run.window_s
+// needs nothing: the loader's default window follows the duration.
+void keep_window_in_run(YAML::Node root, const Case& base, const CaseOverrides& overrides) {
+  if (!given(overrides, "run.duration_s") || given(overrides, "run.window_s")) return;
+  const YAML::Node run = std::as_const(root)["run"];
+  if (!run.IsMap() || !run["window_s"].IsDefined() || !run["duration_s"].IsScalar()) return;
+  double duration_s = 0;
+  try {
+    duration_s = run["duration_s"].as<double>();
+  } catch (const YAML::Exception&) {
+    return;  // not a number: the loader names the key
+  }
+  if (!(duration_s > 0) || duration_s >= base.run.window_s[1]) return;
+  YAML::Node window(YAML::NodeType::Sequence);
+  window.SetStyle(YAML::EmitterStyle::Flow);
+  window.push_back(fmt::format("{}", std::min(base.run.window_s[0], 0.5 * duration_s)));  // shortest exact text
+  window.push_back(fmt::format("{}", duration_s));
+  root["run"]["window_s"] = window;
+}
+
 // The base's hull file and packing, seen from another folder (brash/case_derive.hpp, "Paths").
 void fix_paths(YAML::Node root, const Case& base, const fs::path& base_dir, const CaseOverrides& overrides,
                const Case& derived) {
@@ -199,6 +220,7 @@ std::string derive_case(const fs::path& base_case_file, const CaseOverrides& ove
   YAML::Node root = YAML::LoadFile(base_name);
   for (const auto& [key, value] : overrides)
     set_at(root, split_key(key, base_name), 0, parse_value(key, value, base_name), key, base_name);
+  keep_window_in_run(root, base, overrides);
   const fs::path base_dir = fs::absolute(base_case_file).parent_path();
   // the derived file's first line; the loader's line numbers count it
   const std::string header = fmt::format("# Derived by brash-case from {} with: {} (keys: docs/case_format.md)\n",

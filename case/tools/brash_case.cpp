@@ -445,6 +445,10 @@ int derive(const DeriveOptions& o) {
   const brash::Case base_case = brash::load_case(base);
   if (base_case.references.declared() && !c.references.declared())
     note_references_dropped(base, brash::keys_beyond_references(base_case, c));
+  if (c.run.window_s != base_case.run.window_s && c.run.duration_s < base_case.run.window_s[1])
+    std::cerr << fmt::format("brash-case: note: run.duration_s {} s is shorter than the base's window: run.window_s "
+                             "set to [{}, {}] s (give run.window_s to choose another)\n",
+                             c.run.duration_s, c.run.window_s[0], c.run.window_s[1]);
   const char* note = brash::same_packing_inputs(c, base_case)
                          ? " (the base's)"
                          : " (its own ice: generated when a run starts, or by brash-pack)";

@@ -138,6 +138,25 @@ TEST(DeriveCase, ReadOnlyBaseGivesThePackingToTheDerivedFolder) {
   fs::remove_all(dir);
 }
 
+// One rule for a shorter run, shared with the runners' --duration: the window moves inside the run, unless the
+// variant sets its own; a longer run keeps its base's window.
+TEST(DeriveCase, ShorterRunKeepsItsWindowInside) {
+  const fs::path out = temp_dir("window");
+  const brash::Case quick = brash::load_case(kQuick);
+  ASSERT_EQ(quick.run.window_s, (std::array<double, 2>{5.5, 11.0}));
+  EXPECT_EQ(brash::write_derived_case(kQuick, {{"run.duration_s", "0.1"}}, out / "a").run.window_s,
+            (std::array<double, 2>{0.05, 0.1}));
+  EXPECT_EQ(brash::write_derived_case(kQuick, {{"run.duration_s", "8"}}, out / "b").run.window_s,
+            (std::array<double, 2>{4.0, 8.0}));
+  EXPECT_EQ(brash::write_derived_case(kQuick, {{"run.duration_s", "20"}}, out / "c").run.window_s, quick.run.window_s);
+  EXPECT_EQ(brash::write_derived_case(kQuick, {{"run.duration_s", "8"}, {"run.window_s", "[6, 7]"}}, out / "d")
+                .run.window_s,
+            (std::array<double, 2>{6.0, 7.0}));
+  // a window that does not fit, set by the variant itself, is still refused naming the key
+  EXPECT_NE(refusal({{"run.duration_s", "8"}, {"run.window_s", "[6, 9]"}}, out / "e").find("run.window_s"),
+            std::string::npos);
+}
+
 TEST(DeriveCase, RelativePathsOfTheBaseFolderBecomeAbsolute) {
   const fs::path dir = temp_dir("paths");
   write(dir / "base/my_hull.stl", "solid x\nendsolid x\n");

@@ -12,6 +12,9 @@
 //     (brash-pack) when it is missing: a case derived from a read-only installed case makes its ice in its own folder;
 //   - a hull.file or ice.packing_file given as an override is taken as given (relative to the derived case's folder,
 //     as in any case file).
+// Window: a variant that shortens the run (run.duration_s) below its base's averaging window, without setting
+// run.window_s, gets the window [min(start, duration / 2), duration]: the rule of the runners' --duration, which
+// goes through here.
 // References: the base's references: section is dropped when the variant changes a key they depend on
 // (keys_beyond_references), unless an override sets a references.* key itself.
 #pragma once
