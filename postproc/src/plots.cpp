@@ -56,14 +56,16 @@ void run_gnuplot(const fs::path& script) {
 
 namespace {
 
-// The window mean as a line and a label; a run whose hull met no ice has none, and the label says so.
+// The window mean of fx (the curve it belongs to) as a line, labelled as fx and as the resistance -fx it gives; a
+// run whose hull met no ice has none, and the label says so.
 std::string mean_label(const RunAnalysis& a) {
   const auto& w = a.window.used_s;
   if (a.met_no_ice) return "set label 1 'the hull met no ice in the averaging window' at graph 0.35, graph 0.95 front";
   return fmt::format("set arrow 1 from {}, {} to {}, {} nohead lw 2 lc rgb 'black' front\n"
-                     "set label 1 sprintf('mean resistance -fx = %.4g +- %.2g N (95 %%)', {}, {}) at graph 0.35, "
-                     "graph 0.95 front",
-                     w[0], -a.resistance.mean, w[1], -a.resistance.mean, a.resistance.mean, a.resistance.ci95);
+                     "set label 1 sprintf('black line: window mean of fx = %.4g N, i.e. resistance -fx = %.4g +- %.2g N "
+                     "(95 %%)', {}, {}, {}) at graph 0.3, graph 0.95 front",
+                     w[0], -a.resistance.mean, w[1], -a.resistance.mean, -a.resistance.mean, a.resistance.mean,
+                     a.resistance.ci95);
 }
 
 }  // namespace

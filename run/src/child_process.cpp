@@ -86,6 +86,8 @@ ChildExit run_child(const ChildCommand& command, const ChildHandlers& on) {
     if (on.line(line)) pipe.stop();
   }
   const int status = pipe.close();
+  std::error_code ec;  // the pid file names a process that has ended: it goes (a run folder keeps its results only)
+  std::filesystem::remove(command.dir / command.pid_file, ec);
   if (WIFEXITED(status)) return {WEXITSTATUS(status), 0};
   return {128, WIFSIGNALED(status) ? WTERMSIG(status) : 0};
 }

@@ -48,8 +48,8 @@ void write_meta(const std::filesystem::path& run_dir, const nlohmann::json& meta
 
 std::string git_commit() { return kGitCommit; }
 
-RunDirLock::RunDirLock(const std::filesystem::path& run_dir) {
-  const auto file = run_dir / ".lock";
+RunDirLock::RunDirLock(const std::filesystem::path& run_dir) : file_(run_dir / ".lock") {
+  const auto& file = file_;
   fd_ = ::open(file.c_str(), O_RDWR | O_CREAT, 0644);  // no O_CLOEXEC: the engine child keeps the lock too
   if (fd_ < 0) throw InputError(fmt::format("{}: cannot open the run lock", file.string()));
   if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
@@ -61,8 +61,12 @@ RunDirLock::RunDirLock(const std::filesystem::path& run_dir) {
   }
 }
 
+// The lock file goes with the lock (a finished run folder holds only its results): removed while still held, so
+// that a process opening it from now on opens a new file and takes its lock only after this one is released.
 RunDirLock::~RunDirLock() {
-  if (fd_ >= 0) ::close(fd_);
+  if (fd_ < 0) return;
+  ::unlink(file_.c_str());
+  ::close(fd_);
 }
 
 }  // namespace brash::run

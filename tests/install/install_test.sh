@@ -72,6 +72,7 @@ else
   bad "no meta.json in $work/run"
 fi
 [ -f "$work/run/report.json" ] || bad "no report.json in $work/run"
+for f in .lock engine.pid; do [ -e "$work/run/$f" ] && bad "the finished run folder keeps $f"; done
 
 bare "$prefix/bin/brash-case" new installed_case --cases-dir "$work/cases" > "$tmp/case.log" 2>&1 ||
   { cat "$tmp/case.log"; bad "brash-case new with the default template"; }

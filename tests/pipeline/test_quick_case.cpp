@@ -46,6 +46,7 @@ TEST(Pipeline, DefaultCaseAsMakeRunGivesAnUnflaggedReport) {
   for (const char* f : {"case.yaml", "meta.json", "hull_force.csv", "log.txt", "particles/index.csv", "report.json",
                         "report.md"})
     EXPECT_TRUE(fs::exists(out / f)) << f;
+  for (const char* f : {".lock", "engine.pid"}) EXPECT_FALSE(fs::exists(out / f)) << f << ": left in a finished run";
   const auto meta = read_json(out / "meta.json");
   EXPECT_EQ(meta["status"], "complete");
   EXPECT_EQ(meta["engine"], "liggghts");

@@ -88,6 +88,10 @@ TEST_F(Outputs, PlotsArePngs) {
   EXPECT_TRUE(is_png(dir_ / "ice_views_040.00s.png"));
   EXPECT_FALSE(fs::exists(dir_ / "ice_views_000.00s.png"));
   EXPECT_TRUE(fs::exists(dir_ / "post" / "force_history.gp"));
+  // The mean line is drawn at fx's window mean (the red curve), and its label names it so: fx, and -fx as resistance.
+  const std::string gp = brash::post::read_text_file(dir_ / "post" / "force_history.gp");
+  EXPECT_NE(gp.find("window mean of fx"), std::string::npos) << gp;
+  EXPECT_EQ(gp.find("mean resistance -fx"), std::string::npos) << gp;
 }
 
 TEST_F(Outputs, ParticlesReadBackWithVtk) {

@@ -54,15 +54,14 @@ TEST_F(Child, LinesInOrderAndExitStatus) {
   EXPECT_EQ(e.signal, 0);
 }
 
+// ... and its pid file while it runs, gone once it has ended.
 TEST_F(Child, RunsInItsFolderAndWritesItsPid) {
-  const ChildExit e = run("pwd; echo $$");
-  ASSERT_EQ(lines_.size(), 2u);
+  const ChildExit e = run("pwd; echo $$; cat engine.pid");
+  ASSERT_EQ(lines_.size(), 3u);
   EXPECT_TRUE(fs::equivalent(lines_[0].substr(0, lines_[0].size() - 1), dir_)) << lines_[0];
   const long pid = std::stol(lines_[1]);  // exec: the program runs in the shell's process
-  std::ifstream pid_file(dir_ / "engine.pid");
-  long written = 0;
-  pid_file >> written;
-  EXPECT_EQ(written, pid);
+  EXPECT_EQ(std::stol(lines_[2]), pid);
+  EXPECT_FALSE(fs::exists(dir_ / "engine.pid"));
   ASSERT_EQ(pids_.size(), 2u);
   EXPECT_EQ(pids_.front(), pid);
   EXPECT_EQ(pids_.back(), 0);  // ended

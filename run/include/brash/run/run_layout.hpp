@@ -42,6 +42,7 @@ class RunDirLock {
   RunDirLock& operator=(const RunDirLock&) = delete;
 
  private:
+  std::filesystem::path file_;
   int fd_ = -1;
 };
 
