@@ -77,7 +77,10 @@ StopReason RunMonitor::stop_reason() const {
 }
 
 bool RunMonitor::progress(double t_s, double particle_steps, std::string_view detail) {
-  if (t_first_s_ < 0) t_first_s_ = t_s;  // a resumed attempt starts at its restart time
+  if (t_first_s_ < 0) {  // a resumed attempt starts at its restart time
+    t_first_s_ = t_s;
+    first_progress_wall_s_ = seconds_since(start_);
+  }
   if (stop_reason() == StopReason::None) check_early_stop(t_s);
   const double elapsed = seconds_since(start_);
   // the record so far every 30 s of wall time and at every restart time (meta.json says running; the final
@@ -122,7 +125,8 @@ void RunMonitor::print(double t_s, std::string_view detail) {
   if (!print_progress_ || t_s <= t_first_s_ || (last_print_s_ >= 0 && elapsed - last_print_s_ < (tty_ ? 2.0 : 30.0))) return;
   last_print_s_ = elapsed;
   const double duration = case_.run.duration_s;
-  const double eta = elapsed * (duration - t_s) / (t_s - t_first_s_);
+  // the stepping rate since the first progress point: the engine's start-up (reading the scene, MPI) is paid once
+  const double eta = (elapsed - first_progress_wall_s_) * (duration - t_s) / (t_s - t_first_s_);
   // t to the case's step (at least 2 decimals): a benchmark reads seconds per step off these lines
   const int t_digits = std::clamp(static_cast<int>(std::ceil(-std::log10(case_.run.timestep_s) - 1e-9)), 2, 6);
   std::fprintf(stderr, "%s%s t = %.*f / %.2f s (%3.0f%%)  elapsed %.0f s  ETA %.0f s%s%.*s%s", tty_ ? "\r" : "",

@@ -64,6 +64,7 @@ class RunMonitor final : public Monitor {
   EarlyStopState early_;
   std::chrono::steady_clock::time_point start_;
   double t_first_s_ = -1, last_print_s_ = -1, last_refresh_s_ = 0, next_refresh_t_s_ = 0;
+  double first_progress_wall_s_ = 0;  // wall time of the attempt's first progress point (the engine set up)
 };
 
 }  // namespace brash::run
