@@ -200,6 +200,8 @@ CompareRow compare_row(const RunAnalysis& a) {
   r.fluid_model = run_fluid_model(a);
   if (a.reference && a.reference->resistance_full_kN) r.reference_full_kN = *a.reference->resistance_full_kN;
   r.speed_m_s = a.case_.speed_m_s;
+  if (!a.force.t_s.empty()) r.duration_s = a.force.t_s.back();
+  r.window_s = a.window.used_s;
   r.met_no_ice = a.met_no_ice;
   if (!a.met_no_ice) {  // else NaN: no resistance (compare_markdown says "met no ice", the CSV leaves it empty)
     r.mean_N = a.resistance.mean;
@@ -214,11 +216,12 @@ CompareRow compare_row(const RunAnalysis& a) {
 }
 
 std::string compare_markdown(const std::vector<CompareRow>& rows) {
-  std::string s = "| run | engine | fluid model | speed [m/s] | R model [N] | R full [kN] | FSICR R_CH [kN] | FSICR / sim | complete |\n"
-                  "|---|---|---|---|---|---|---|---|---|\n";
+  std::string s = "| run | engine | fluid model | speed [m/s] | run [s] | window [s] | R model [N] | R full [kN] | "
+                  "FSICR R_CH [kN] | FSICR / sim | complete |\n"
+                  "|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& r : rows)
-    s += fmt::format("| {} | {} | {} | {:.3f} | {} | {} | {:.1f} | {:.2f} | {} |\n", r.run, r.engine, r.fluid_model,
-                     r.speed_m_s, r.met_no_ice ? "met no ice" : fmt::format("{:.4f} ± {:.4f}", r.mean_N, r.ci95_N),
+    s += fmt::format("| {} | {} | {} | {:.3f} | {:.3f} | {:.3f}-{:.3f} | {} | {} | {:.1f} | {:.2f} | {} |\n", r.run,
+                     r.engine, r.fluid_model, r.speed_m_s, r.duration_s, r.window_s[0], r.window_s[1], r.met_no_ice ? "met no ice" : fmt::format("{:.4f} ± {:.4f}", r.mean_N, r.ci95_N),
                      r.met_no_ice ? "met no ice" : fmt::format("{:.1f} ± {:.1f}", r.full_kN, r.full_ci95_kN),
                      r.R_CH_kN, r.ratio, r.complete ? "yes" : "NO");
   s += "\n± = 95 % confidence interval (block averaging).\n";
@@ -242,11 +245,13 @@ std::string plot_value(double v) { return std::isnan(v) ? std::string("NaN") : f
 }  // namespace
 
 std::string compare_csv(const std::vector<CompareRow>& rows) {
-  std::string s = "run,engine,fluid_model,speed_m_s,mean_N,ci95_N,full_kN,full_ci95_kN,R_CH_kN,ratio_fsicr_to_sim,complete\n";
+  std::string s = "run,engine,fluid_model,speed_m_s,mean_N,ci95_N,full_kN,full_ci95_kN,R_CH_kN,ratio_fsicr_to_sim,complete,"
+                  "duration_s,window_start_s,window_end_s\n";
   for (const auto& r : rows)
-    s += fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", r.run, r.engine, r.fluid_model, r.speed_m_s,
+    s += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", r.run, r.engine, r.fluid_model, r.speed_m_s,
                      csv_value(r.mean_N), csv_value(r.ci95_N), csv_value(r.full_kN), csv_value(r.full_ci95_kN),
-                     r.R_CH_kN, r.ratio, r.complete ? 1 : 0);
+                     r.R_CH_kN, r.ratio, r.complete ? 1 : 0, csv_value(r.duration_s), csv_value(r.window_s[0]),
+                     csv_value(r.window_s[1]));
   return s;
 }
 

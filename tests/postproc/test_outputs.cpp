@@ -177,7 +177,10 @@ TEST_F(Outputs, CompareMakesTableCsvAndPlot) {
   const auto csv = brash::post::read_text_file(out / "compare.csv");
   EXPECT_NE(csv.find("run,engine,fluid_model,speed_m_s,mean_N"), std::string::npos);
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3);
-  EXPECT_NE(brash::post::read_text_file(out / "compare.md").find("| synthetic | added_mass | 0.482 |"), std::string::npos);
+  EXPECT_NE(csv.find(",complete,duration_s,window_start_s,window_end_s\n"), std::string::npos) << csv;
+  // each run's length and averaging window beside its resistance (the synthetic runs: 45 s, window [15, 40] s)
+  EXPECT_NE(brash::post::read_text_file(out / "compare.md").find("| synthetic | added_mass | 0.482 | 45.000 | 15.000-40.000 |"),
+            std::string::npos) << brash::post::read_text_file(out / "compare.md");
   EXPECT_TRUE(is_png(out / "compare.png"));
   fs::remove_all(second);
   fs::remove_all(out);

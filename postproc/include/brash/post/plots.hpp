@@ -1,6 +1,7 @@
 // PNG plots with gnuplot (pngcairo): each plot writes a data file and a script into a work folder,
 // runs gnuplot as a subprocess (exit status checked) into a temp PNG and renames it into place.
 #pragma once
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -30,6 +31,8 @@ std::filesystem::path plot_ice_views(const Snapshot& s, const SnapshotEntry& e, 
 struct CompareRow {
   std::string run, engine, fluid_model;
   double speed_m_s = 0;
+  double duration_s = NAN;                      // the record's last sample (model time run)
+  std::array<double, 2> window_s{NAN, NAN};     // the window averaged (after any shortening)
   double mean_N = NAN, ci95_N = NAN, full_kN = NAN, full_ci95_kN = NAN;  // NaN: the run's hull met no ice
   bool met_no_ice = false;
   double R_CH_kN = NAN, ratio = NAN;
