@@ -41,6 +41,12 @@ FixIceFluid::FixIceFluid(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg
   if (!atom->radius_flag || !atom->rmass_flag)
     error->all(FLERR, "fix icefluid requires per-atom radius and mass (atom_style granular/sphere)");
   parse(narg, arg);
+  if (comm->me == 0) {  // the model the deck runs, in its log: brash-post reads it from a run without meta.json
+    const std::string msg = "fix icefluid: model " + std::string(to_string(params_.model)) + ", treatment " +
+                            std::string(to_string(params_.treatment)) + "\n";
+    if (screen) fputs(msg.c_str(), screen);
+    if (logfile) fputs(msg.c_str(), logfile);
+  }
 
   peratom_flag = 1;
   size_peratom_cols = kOutputSize;

@@ -3,7 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <functional>
+#include <optional>
+#include <regex>
 
 #include <fmt/format.h>
 
@@ -163,6 +166,23 @@ void finish_analysis(RunAnalysis& a) {
   a.reference = published_reference(a.case_.references, run_fluid_model(a));
 }
 
+// A run without meta.json (an own LIGGGHTS deck): the fluid model and treatment fix icefluid printed into the deck's
+// log ("fix icefluid: model drag, treatment implicit"), the last such line of the first log found; the log's name.
+std::optional<std::string> fluid_from_deck_log(const std::filesystem::path& run_dir, RunMeta& meta) {
+  static const std::regex line(R"(^fix icefluid: model ([a-z_]+), treatment ([a-z_]+)\s*$)");
+  for (const char* name : {"log.liggghts", "log.lammps", "log.txt"}) {
+    std::ifstream in(run_dir / name);
+    std::string text, model, treatment;
+    std::smatch m;
+    while (std::getline(in, text))
+      if (std::regex_match(text, m, line)) model = m[1], treatment = m[2];
+    if (model.empty()) continue;
+    meta.fluid_model = model, meta.treatment = treatment;
+    return std::string(name);
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 RunAnalysis analyze_run(const std::filesystem::path& run_dir) {
@@ -173,10 +193,15 @@ RunAnalysis analyze_run(const std::filesystem::path& run_dir) {
   a.case_ = read_post_case(run_dir / "case.yaml");
   const auto force_path = force_record_file(run_dir);
   a.force = read_force_record(force_path, a.meta.in_progress());
-  if (!has_meta)
-    a.notes.push_back("no meta.json (a run made without a brash runner): engine, run status and cost are unknown, the "
-                      "fluid model is the case's, and the record is taken as it stands: nothing says whether the run "
-                      "finished (docs/case_format.md, \"A run from your own input\")");
+  if (!has_meta) {
+    const auto log = fluid_from_deck_log(run_dir, a.meta);
+    a.notes.push_back(fmt::format(
+        "no meta.json (a run made without a brash runner): engine, run status and cost are unknown, the fluid model "
+        "is {}, and the record is taken as it stands: nothing says whether the run finished (docs/case_format.md, "
+        "\"A run from your own input\")",
+        log ? fmt::format("the deck's own ({}, fix icefluid's line)", *log)
+            : std::string("the case's (no log.liggghts, log.lammps or log.txt with fix icefluid's line)")));
+  }
   if (force_path.filename() != "hull_force.csv")
     a.notes.push_back(fmt::format("hull force read from {} (fix ave/time: TimeStep t fx fy fz)",
                                   force_path.filename().string()));
@@ -398,7 +423,9 @@ nlohmann::ordered_json report_json(const RunAnalysis& a) {
 std::string report_markdown(const RunAnalysis& a) {
   const auto& w = a.window;
   const auto fluid = run_fluid_model(a);
-  std::string md = fmt::format("# brash run report: {}\n\n", a.run_dir.filename().string());
+  // the run folder's own name, also for "." or a path ending in '/'
+  const std::string name = std::filesystem::weakly_canonical(std::filesystem::absolute(a.run_dir)).filename().string();
+  std::string md = fmt::format("# brash run report: {}\n\n", name);
   if (!a.notes.empty()) {
     md += "## Read first\n\n";
     for (const auto& n : a.notes) md += fmt::format("- **{}**\n", n);

@@ -70,10 +70,11 @@ TEST(Examples, FloatingSphereSettlesAtTheClosedFormDraft) {
 
 // The channel deck runs to its end; its hull force record has a row every 5 ms and the ice resists the hull
 // (mean -fx > 0 over the window, beyond its scatter); brash-post reports the same mean from the raw record with
-// case.yaml alone, then marks the run complete once a meta.json says so.
+// case.yaml alone, with the fluid model the deck ran (fix icefluid's line in its log, not case.yaml's 'both') and
+// the folder's name as title, then marks the run complete once a meta.json says so.
 TEST(Examples, ChannelRunsAndBrashPostReportsItsResistance) {
   const auto dir = copy_example("channel");
-  ASSERT_EQ(run_deck(dir, "in.channel"), 0) << dir;
+  ASSERT_EQ(run_deck(dir, "in.channel", "-var model drag"), 0) << dir;
   const auto rows = read_table(dir / "hull_force.raw");
   ASSERT_EQ(rows.size(), 501u) << "one row every 100 steps of 50,000, and step 0";
   double sum = 0;
@@ -91,6 +92,10 @@ TEST(Examples, ChannelRunsAndBrashPostReportsItsResistance) {
   EXPECT_NEAR(r["mean"].get<double>(), resistance, 1e-6 * resistance);
   EXPECT_GT(r["mean"].get<double>() - r["ci95"].get<double>(), 0) << "resisting beyond the 95 % CI";
   EXPECT_EQ(report["engine"], "unknown");
+  EXPECT_EQ(report["fluid_model"], "drag");
+  EXPECT_EQ(report["treatment"], "implicit");
+  EXPECT_NE(brash::test::read_text(dir / "report.md").find("# brash run report: " + dir.filename().string() + "\n"),
+            std::string::npos);
   EXPECT_FALSE(report["complete"].get<bool>()) << "nothing says the run finished";
   EXPECT_NE(brash::test::read_text(dir / "report.md").find("no meta.json"), std::string::npos);
 
