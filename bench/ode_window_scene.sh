@@ -5,10 +5,11 @@
 # where it was then (bench-ode --scene-from). Each setting runs STEPS steps of dt 1e-3 s on one core, one after the
 # other in one sitting:
 #   all        every piece integrated
-#   farfield   --cull with the case's far field window: idle beyond 0.3 m ahead of the bow and 1.0 m behind the
-#              stern, woken by the force rule (1e-3 of a piece's weight: brash-ode refuses the neighbour-speed wake)
+#   farfield   the case's far field window (speedups.farfield: true): idle beyond 0.3 m ahead of the bow and 1.0 m
+#              behind the stern, woken by the force rule (1e-3 of a piece's weight: brash-ode refuses the
+#              neighbour-speed wake), membership every 20 ODE steps
 #   beside     farfield, and ice more than SIDE_M beyond the hull's half beam idles too once slower than 5 mm/s
-#              (--cull-side, speedups.farfield_beside_m; the ice between the hull and the channel walls)
+#              (speedups.farfield_beside_m; the ice between the hull and the channel walls)
 # A scene from a soft-contact run starts with a contact surface layer as deep as its largest overlap (as the settled
 # bed does). Prints seconds per step, pieces awake and contacts at the end, and the ratios to `all`.
 #   bash bench/ode_window_scene.sh [RUN_DIR (runs/paper-liggghts-both-window)] [STEPS (20)]   (~10 min)
@@ -37,9 +38,13 @@ trap 'rm -rf "$work"' EXIT
 # the dump at model time T: its file name from the run's particles/index.csv (step,t_s,file,...)
 dump_at() { awk -F, -v t="$1" 'NR > 1 && $2 + 0 == t + 0 { print $3 }' "$run/particles/index.csv"; }
 
+# membership every 20 ODE steps: farfield_every_steps counts the case's (DEM) steps
+every="$(/usr/bin/python3 -c "print(round(20 * $dt / $("$bin/brash-case" get "$work/case" run.timestep_s)))")"
+farfield="--set speedups.farfield=true --set speedups.farfield_ahead_m=0.3 --set speedups.farfield_behind_m=1.0"
+farfield+=" --set speedups.farfield_every_steps=$every"
 declare -A opts=([all]=""
-                 [farfield]="--cull --cull-ahead 0.3 --cull-behind 1.0"
-                 [beside]="--cull --cull-ahead 0.3 --cull-behind 1.0 --cull-side $side_m")
+                 [farfield]="$farfield"
+                 [beside]="$farfield --set speedups.farfield_beside_m=$side_m")
 duration="$(/usr/bin/python3 -c "print($steps * $dt)")"
 for t in 15 25; do
   file="$(dump_at "$t")"

@@ -30,6 +30,9 @@ std::string_view to_string(IceClass v) { return text_of(case_keys::kIceClass, v)
 std::string_view to_string(PackingMode v) { return text_of(case_keys::kPackingMode, v); }
 std::string_view to_string(CaTable v) { return text_of(case_keys::kCaTable, v); }
 std::string_view to_string(ChannelEnds v) { return text_of(case_keys::kChannelEnds, v); }
+std::string_view to_string(OdeImplicit v) { return text_of(case_keys::kOdeImplicit, v); }
+std::string_view to_string(OdeBroadPhase v) { return text_of(case_keys::kOdeBroadPhase, v); }
+std::string_view to_string(OdeSphereOrder v) { return text_of(case_keys::kOdeSphereOrder, v); }
 std::string to_string(const CaTableSpec& v) {
   if (v.table == CaTable::Uniform) return fmt::format("uniform {}", v.uniform_ca);
   return std::string(to_string(v.table));

@@ -128,8 +128,8 @@ void fix_paths(YAML::Node root, const Case& base, const fs::path& base_dir, cons
 
 // Keys of how a run is computed, not of the hull, speed, ice or fluid it computes: a variant that changes only
 // these still describes its base's published references (a key ending in '.' stands for its whole section).
-constexpr std::array<std::string_view, 16> kKeysKeepingReferences{
-    "name",          "description",          "run.",           "speedups.",       "guards.",
+constexpr std::array<std::string_view, 17> kKeysKeepingReferences{
+    "name",          "description",          "run.",           "speedups.",       "guards.",      "ode.",
     "fsicr.",        "references.",          "contact.youngs_modulus_pa",         "fluid.model",
     "fluid.treatment", "hull.band_m",        "hull.start_x_m", "ice.seed",        "ice.settle",
     "ice.settle_speed_m_s", "ice.packing_file"};

@@ -416,6 +416,49 @@ const KeySpec kGuards[] = {
     integer<&Case::guards, &GuardSpec::every_steps>("every_steps", "check every N steps"),
 };
 
+const KeySpec kOde[] = {
+    number<&Case::ode, &OdeSpec::timestep_s>("timestep_s", positive, "> 0",
+                                             "brash-ode's time step [s] (run.timestep_s is the soft-contact step of "
+                                             "LIGGGHTS and YADE; docs/ode.md)"),
+    integer<&Case::ode, &OdeSpec::iterations>("iterations", "dWorldQuickStep iterations per step"),
+    number<&Case::ode, &OdeSpec::erp>("erp", [](double e) { return e >= 0 && e <= 1; }, "in [0, 1]",
+                                      "ODE's error reduction parameter (the share of a contact's depth corrected per "
+                                      "step)"),
+    number<&Case::ode, &OdeSpec::cfm>("cfm", non_negative, ">= 0", "ODE's constraint force mixing (contact give)"),
+    number<&Case::ode, &OdeSpec::surface_layer_m>(
+        "surface_layer_m", non_negative, ">= 0",
+        "contact depth ODE leaves uncorrected [m]; a settled bed runs with at least its largest overlap"),
+    number<&Case::ode, &OdeSpec::angular_damping>("angular_damping", [](double d) { return d >= 0 && d <= 1; },
+                                                  "in [0, 1]",
+                                                  "ODE's angular damping per step (the fluid's torque is neglected)"),
+    choice<kOdeImplicit, &Case::ode, &OdeSpec::implicit>(
+        "implicit", "fluid.treatment implicit on ODE: effective_mass (the body mass includes the added mass, "
+                    "contacts see it) or scale_forces (the external forces scaled, contacts see the bare mass)"),
+    choice<kOdeBroadPhase, &Case::ode, &OdeSpec::broad_phase>(
+        "broad_phase", "grid (brash's, follows the active pieces) or sap (ODE's sweep and prune): the same "
+                       "contacts, bit for bit"),
+    choice<kOdeSphereOrder, &Case::ode, &OdeSpec::sphere_order>(
+        "sphere_order", "order of the ODE bodies: spatial (cells of two mean diameters) or packing (the packing "
+                        "file's; slower, the same physics)"),
+    flag<&Case::ode, &OdeSpec::idle_geoms_out>(
+        "idle_geoms_out", "idle far-field pieces deep in the idle zone leave collision detection (the same contacts, "
+                          "faster); false keeps them in, for checking"),
+    flag<&Case::ode, &OdeSpec::auto_disable>(
+        "auto_disable", "ODE's auto-disable of resting pieces outside the far field's window (speedups.farfield_*)"),
+    number<&Case::ode, &OdeSpec::auto_disable_linear_m_s>("auto_disable_linear_m_s", non_negative, ">= 0",
+                                                          "auto-disable: at rest below this speed [m/s]"),
+    number<&Case::ode, &OdeSpec::auto_disable_angular_rad_s>("auto_disable_angular_rad_s", non_negative, ">= 0",
+                                                             "auto-disable: at rest below this spin [rad/s]"),
+    integer<&Case::ode, &OdeSpec::auto_disable_steps>("auto_disable_steps",
+                                                      "auto-disable: at rest for this many steps"),
+    number<&Case::ode, &OdeSpec::settle_s>(
+        "settle_s", non_negative, ">= 0",
+        "the whole bed integrated this long before t = 0, the hull parked [s] (the far field begins after it)"),
+    number<&Case::ode, &OdeSpec::settle_damping>(
+        "settle_damping", [](double d) { return d >= 0 && d <= 0.5; }, "in [0, 0.5]",
+        "ODE's velocity damping per step over the settling's first half (its second half is free)"),
+};
+
 const KeySpec kReferences[] = {
     text<&Case::references, &ReferenceSpec::source>("source", "where the values are published (required with any "
                                                               "value)"),
@@ -573,6 +616,7 @@ std::span<const SectionSpec> sections() {
       {"fsicr", kFsicr, {}},
       {"speedups", kSpeedups, kSpeedupChecks},
       {"guards", kGuards, {}},
+      {"ode", kOde, {}},
       {"references", kReferences, kReferenceChecks,
        [](const Case& c) { return c.references.declared() || !c.references.source.empty(); }},
   };

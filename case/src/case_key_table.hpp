@@ -36,6 +36,12 @@ inline constexpr EnumText<HullFlow> kHullFlow[] = {
 inline constexpr EnumText<ChannelEnds> kChannelEnds[] = {{ChannelEnds::Open, "open"}, {ChannelEnds::Walls, "walls"}};
 inline constexpr EnumText<WakeBy> kWakeBy[] = {
     {WakeBy::Force, "force"}, {WakeBy::NeighbourSpeed, "neighbour_speed"}, {WakeBy::PushFront, "push_front"}};
+inline constexpr EnumText<OdeImplicit> kOdeImplicit[] = {{OdeImplicit::EffectiveMass, "effective_mass"},
+                                                         {OdeImplicit::ScaleForces, "scale_forces"}};
+inline constexpr EnumText<OdeBroadPhase> kOdeBroadPhase[] = {{OdeBroadPhase::Grid, "grid"},
+                                                             {OdeBroadPhase::Sap, "sap"}};
+inline constexpr EnumText<OdeSphereOrder> kOdeSphereOrder[] = {{OdeSphereOrder::Spatial, "spatial"},
+                                                               {OdeSphereOrder::Packing, "packing"}};
 inline constexpr EnumText<CaTable> kCaTable[] = {
     {CaTable::Table1, "table1"}, {CaTable::Text, "text"}, {CaTable::Zero, "zero"}, {CaTable::Uniform, "uniform"}};
 

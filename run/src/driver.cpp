@@ -154,8 +154,10 @@ namespace {
 std::string options_problem(const DriverOptions& o) {
   if (o.case_path.empty() && o.resume_dir.empty()) return "case_dir (a folder with case.yaml) or --resume RUN_DIR is required";
   const auto& v = o.overrides;
-  if (!o.resume_dir.empty() && (!v.model.empty() || !v.treatment.empty() || v.duration_s > 0 || !o.out_dir.empty()))
-    return "--resume continues a run as it was set up; it takes no --model/--treatment/--duration/--out";
+  if (!o.resume_dir.empty() &&
+      (!v.model.empty() || !v.treatment.empty() || v.duration_s > 0 || !v.sets.empty() || !o.out_dir.empty()))
+    return "--resume continues a run as it was set up (its case.yaml); it takes no "
+           "--model/--treatment/--duration/--set/--out";
   return {};
 }
 

@@ -41,7 +41,7 @@ Case load_case_with_overrides(const fs::path& case_file, const CaseOverrides& o,
   brash::CaseOverrides set;
   if (!o.model.empty()) set.emplace_back("fluid.model", o.model);
   if (!o.treatment.empty()) set.emplace_back("fluid.treatment", o.treatment);
-  if (!o.channel_ends.empty()) set.emplace_back("channel.ends", o.channel_ends);
+  set.insert(set.end(), o.sets.begin(), o.sets.end());
   if (o.duration_s > 0) set.emplace_back("run.duration_s", fmt::format("{}", o.duration_s));
   if (set.empty()) return load_case(case_file);
   // through the case library, as `brash-case derive` (validated like a case file; a shorter run keeps its window

@@ -302,13 +302,13 @@ TEST(CaseLoader, HullFlowCaseRunsWithTheModelGivenOnTheCommandLine) {
   // --model added_mass on a drag case with the flow is refused by the final parse
   const fs::path dir = temp_dir("hull_flow_override");
   const fs::path am = write_case(dir, "name: h\nfluid:\n  model: added_mass\n  hull_flow: thin_ship\n");
-  const Case c = brash::run::load_case_with_overrides(am, {"drag", "", -1, ""}, "[test]");
+  const Case c = brash::run::load_case_with_overrides(am, {"drag", "", -1, {}}, "[test]");
   EXPECT_EQ(c.fluid.model, brash::FluidModel::Drag);
   EXPECT_EQ(c.fluid.hull_flow, brash::HullFlow::ThinShip);
-  EXPECT_THROW(brash::run::load_case_with_overrides(am, {"", "", -1, ""}, "[test]"), brash::InputError);
+  EXPECT_THROW(brash::run::load_case_with_overrides(am, {"", "", -1, {}}, "[test]"), brash::InputError);
   const fs::path drag = write_case(dir, "name: h\nfluid: {model: drag, hull_flow: thin_ship}\n", "d.yaml");
   try {
-    (void)brash::run::load_case_with_overrides(drag, {"added_mass", "", -1, ""}, "[test]");
+    (void)brash::run::load_case_with_overrides(drag, {"added_mass", "", -1, {}}, "[test]");
     ADD_FAILURE() << "no InputError";
   } catch (const brash::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("fluid.hull_flow"), std::string::npos) << e.what();
@@ -326,7 +326,9 @@ TEST(CaseLoader, ChannelEndsAreOpenUnlessWalledByTheCaseOrTheCommandLine) {
   EXPECT_EQ(brash::parse_case(brash::dump_case_yaml(walls), kRepo, "[dump]").channel.ends, brash::ChannelEnds::Walls);
   const fs::path dir = temp_dir("channel_ends");
   const fs::path open_case = write_case(dir, "name: e\n");
-  EXPECT_EQ(brash::run::load_case_with_overrides(open_case, {"", "", -1, "walls"}, "[test]").channel.ends,
+  // a runner's --set channel.ends=walls is a change of the case
+  EXPECT_EQ(brash::run::load_case_with_overrides(open_case, {"", "", -1, {{"channel.ends", "walls"}}}, "[test]")
+                .channel.ends,
             brash::ChannelEnds::Walls);
   expect_error("name: x\nchannel: {ends: closed}\n", {"channel.ends", "closed", "open | walls"});
 }
@@ -334,7 +336,9 @@ TEST(CaseLoader, ChannelEndsAreOpenUnlessWalledByTheCaseOrTheCommandLine) {
 TEST(CaseLoader, SettleIsOffUnlessAskedAndItsSpeedPositive) {
   const Case d = brash::parse_case("name: x\n", kRepo, "mem");
   EXPECT_FALSE(d.ice.settle);
-  EXPECT_EQ(brash::dump_case_yaml(d).find("settle"), std::string::npos);  // an unsettled case's file is unchanged
+  // an unsettled case's file is unchanged: no ice.settle keys (ode.settle_s is brash-ode's own settling)
+  EXPECT_EQ(brash::dump_case_yaml(d).find("\n  settle:"), std::string::npos);
+  EXPECT_EQ(brash::dump_case_yaml(d).find("settle_speed_m_s"), std::string::npos);
   const Case s = brash::parse_case("name: x\nice: {settle: true, settle_speed_m_s: 0.002}\n", kRepo, "mem");
   EXPECT_TRUE(s.ice.settle);
   EXPECT_EQ(s.ice.settle_speed_m_s, 0.002);
@@ -432,6 +436,69 @@ TEST(CaseLoaderErrors, GuardsKeysNamed) {
   expect_error("name: x\nguards: {every_steps: 0}\n", {"guards.every_steps", "integer"});
   expect_error("name: x\nguards: {every_steps: 2.5}\n", {"guards.every_steps", "integer"});
   expect_error("name: x\nguards: 3\n", {"guards", "mapping"});
+}
+
+// brash-ode's settings (the ode: section): the defaults brash-ode ran with before they were keys, and each read.
+TEST(CaseLoader, OdeDefaultsAndRead) {
+  const Case d = brash::parse_case("name: x\n", kRepo, "mem");
+  EXPECT_DOUBLE_EQ(d.ode.timestep_s, 5e-4);
+  EXPECT_EQ(d.ode.iterations, 8);
+  EXPECT_DOUBLE_EQ(d.ode.erp, 0.2);
+  EXPECT_DOUBLE_EQ(d.ode.cfm, 1e-5);
+  EXPECT_EQ(d.ode.implicit, brash::OdeImplicit::EffectiveMass);
+  EXPECT_EQ(d.ode.broad_phase, brash::OdeBroadPhase::Grid);
+  EXPECT_EQ(d.ode.sphere_order, brash::OdeSphereOrder::Spatial);
+  EXPECT_TRUE(d.ode.idle_geoms_out);
+  EXPECT_FALSE(d.ode.auto_disable);
+  EXPECT_EQ(d.ode.auto_disable_steps, 20);
+  EXPECT_DOUBLE_EQ(d.ode.settle_s, 0.0);
+  const Case c = brash::parse_case(
+      "name: x\node:\n  timestep_s: 1.0e-3\n  iterations: 20\n  erp: 0.4\n  cfm: 0\n  surface_layer_m: 1e-4\n"
+      "  angular_damping: 0.01\n  implicit: scale_forces\n  broad_phase: sap\n  sphere_order: packing\n"
+      "  idle_geoms_out: false\n  auto_disable: true\n  auto_disable_linear_m_s: 0.01\n"
+      "  auto_disable_angular_rad_s: 0.2\n  auto_disable_steps: 5\n  settle_s: 0.6\n  settle_damping: 0.02\n",
+      kRepo, "mem");
+  EXPECT_DOUBLE_EQ(c.ode.timestep_s, 1e-3);
+  EXPECT_EQ(c.ode.iterations, 20);
+  EXPECT_DOUBLE_EQ(c.ode.erp, 0.4);
+  EXPECT_DOUBLE_EQ(c.ode.cfm, 0.0);
+  EXPECT_DOUBLE_EQ(c.ode.surface_layer_m, 1e-4);
+  EXPECT_DOUBLE_EQ(c.ode.angular_damping, 0.01);
+  EXPECT_EQ(c.ode.implicit, brash::OdeImplicit::ScaleForces);
+  EXPECT_EQ(c.ode.broad_phase, brash::OdeBroadPhase::Sap);
+  EXPECT_EQ(c.ode.sphere_order, brash::OdeSphereOrder::Packing);
+  EXPECT_FALSE(c.ode.idle_geoms_out);
+  EXPECT_TRUE(c.ode.auto_disable);
+  EXPECT_DOUBLE_EQ(c.ode.auto_disable_linear_m_s, 0.01);
+  EXPECT_DOUBLE_EQ(c.ode.auto_disable_angular_rad_s, 0.2);
+  EXPECT_EQ(c.ode.auto_disable_steps, 5);
+  EXPECT_DOUBLE_EQ(c.ode.settle_s, 0.6);
+  EXPECT_DOUBLE_EQ(c.ode.settle_damping, 0.02);
+  // the resolved case writes them back
+  EXPECT_EQ(brash::parse_case(brash::dump_case_yaml(c), kRepo, "mem"), c);
+}
+
+TEST(CaseLoaderErrors, OdeKeysNamed) {
+  expect_error("name: x\node:\n  dt: 1e-3\n", {"ode.dt", "unknown key", ":3:"});
+  expect_error("name: x\node: {timestep_s: 0}\n", {"ode.timestep_s", "> 0"});
+  expect_error("name: x\node: {timestep_s: .inf}\n", {"ode.timestep_s", "finite"});
+  expect_error("name: x\node: {iterations: 0}\n", {"ode.iterations", "integer"});
+  expect_error("name: x\node: {iterations: 8.5}\n", {"ode.iterations", "integer"});
+  expect_error("name: x\node: {erp: 1.5}\n", {"ode.erp", "[0, 1]"});
+  expect_error("name: x\node: {cfm: -1e-5}\n", {"ode.cfm", ">= 0"});
+  expect_error("name: x\node: {surface_layer_m: -0.001}\n", {"ode.surface_layer_m", ">= 0"});
+  expect_error("name: x\node: {angular_damping: 2}\n", {"ode.angular_damping", "[0, 1]"});
+  expect_error("name: x\node: {implicit: lagged}\n", {"ode.implicit", "lagged", "effective_mass | scale_forces"});
+  expect_error("name: x\node: {broad_phase: octree}\n", {"ode.broad_phase", "octree", "grid | sap"});
+  expect_error("name: x\node: {sphere_order: random}\n", {"ode.sphere_order", "random", "spatial | packing"});
+  expect_error("name: x\node: {idle_geoms_out: maybe}\n", {"ode.idle_geoms_out"});
+  expect_error("name: x\node: {auto_disable: 1.5}\n", {"ode.auto_disable"});
+  expect_error("name: x\node: {auto_disable_linear_m_s: -1}\n", {"ode.auto_disable_linear_m_s", ">= 0"});
+  expect_error("name: x\node: {auto_disable_angular_rad_s: -1}\n", {"ode.auto_disable_angular_rad_s", ">= 0"});
+  expect_error("name: x\node: {auto_disable_steps: 0}\n", {"ode.auto_disable_steps", "integer"});
+  expect_error("name: x\node: {settle_s: -0.1}\n", {"ode.settle_s", ">= 0"});
+  expect_error("name: x\node: {settle_damping: 0.6}\n", {"ode.settle_damping", "[0, 0.5]"});
+  expect_error("name: x\node: 3\n", {"ode", "mapping"});
 }
 
 TEST(CaseLoaderErrors, MissingFile) {

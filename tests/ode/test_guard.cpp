@@ -251,7 +251,7 @@ TEST_F(OdeGuard, KeysOnlyLiggghtsCarriesOutAreRefusedByName) {
 }
 
 // The settled bed (ice.settle) runs on ODE with a contact surface layer as deep as its largest overlap (deeper
-// with a larger --surface-layer), named in the log and meta.json; the packing runs with none. The bed here is the
+// with a larger ode.surface_layer_m), named in the log and meta.json; the packing runs with none. The bed here is the
 // smoke packing drawn 0.5 % closer to its centroid, written where the run looks for the cached settled bed.
 TEST_F(OdeGuard, SettledBedRunsWithASurfaceLayerAsDeepAsItsLargestOverlap) {
   const fs::path dir = make_case("settled", "\nice:\n", "\nice:\n  settle: true\n", "");
@@ -285,11 +285,11 @@ TEST_F(OdeGuard, SettledBedRunsWithASurfaceLayerAsDeepAsItsLargestOverlap) {
   EXPECT_EQ(layer_in(packing.meta), 0.0);
 }
 
-// The case's far field (speedups.farfield: true) is brash-ode's --cull with the case's window (ahead, behind,
-// beside), membership period (farfield_every_steps DEM steps in ODE steps) and wake; a --cull-* option given on the
-// command line wins over the case's key. The neighbour-speed wake is refused (biased on rigid contacts), naming the
-// key and the copy to run.
-TEST_F(OdeGuard, CaseFarFieldIsTheCullWithTheCasesWindowUnlessTheCommandLineSaysOtherwise) {
+// The case's far field (speedups.farfield: true) is brash-ode's cull with the case's window (ahead, behind, beside),
+// membership period (farfield_every_steps DEM steps in ODE steps) and wake; --set on the command line changes the
+// case, and the run folder's case.yaml records it. The neighbour-speed wake is refused (biased on rigid contacts),
+// naming the key and the copy to run.
+TEST_F(OdeGuard, CaseFarFieldIsTheCullWithTheCasesWindow) {
   const fs::path dir = make_case("farfield", "\nrun:\n",
                                  "\nspeedups:\n  farfield: true\n  farfield_ahead_m: 0.3\n  farfield_behind_m: 0.7\n"
                                  "  farfield_beside_m: 0.1\n  farfield_every_steps: 100\n"
@@ -308,10 +308,13 @@ TEST_F(OdeGuard, CaseFarFieldIsTheCullWithTheCasesWindowUnlessTheCommandLineSays
   EXPECT_DOUBLE_EQ(k.value("cull_side_m", -1.0), 0.1);
   EXPECT_EQ(k.value("cull_every_steps", -1), 20);  // 100 steps of 1e-4 s = 0.01 s = 20 steps of 5e-4 s
   EXPECT_EQ(k.value("cull_wake_by", std::string()), "force");
-  const auto given = skips("given", "--cull-ahead 0.5 --cull-side 0.2");
+  const auto given = skips("given", "--set speedups.farfield_ahead_m=0.5 --set speedups.farfield_beside_m=0.2");
   EXPECT_DOUBLE_EQ(given.value("cull_ahead_m", -1.0), 0.5);
   EXPECT_DOUBLE_EQ(given.value("cull_behind_m", -1.0), 0.7);
   EXPECT_DOUBLE_EQ(given.value("cull_side_m", -1.0), 0.2);
+  const std::string given_yaml = slurp(dir.parent_path() / "given" / "case.yaml");
+  EXPECT_NE(given_yaml.find("\n  farfield_ahead_m: 0.5\n"), std::string::npos) << given_yaml;
+  EXPECT_NE(given_yaml.find("\n  farfield_beside_m: 0.2\n"), std::string::npos) << given_yaml;
   std::string yaml = slurp(dir / "case.yaml");
   yaml.replace(yaml.find("farfield_wake_by: force"), 23, "farfield_wake_by: neighbour_speed");
   std::ofstream(dir / "case.yaml") << yaml;

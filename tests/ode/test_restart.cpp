@@ -88,6 +88,12 @@ void expect_resumed_matches(const fs::path& uninterrupted, const fs::path& resum
   EXPECT_LE(max_diff(uninterrupted / last, resumed / last, 5, 8), 1e-6);
 }
 
+// The case's far field on the command line: idle beyond 0.08 m ahead of the bow, 0.02 m behind the stern and
+// beside the hull's half beam
+const std::string kFarFieldBeside =
+    " --set speedups.farfield=true --set speedups.farfield_ahead_m=0.08 --set speedups.farfield_behind_m=0.02"
+    " --set speedups.farfield_beside_m=0";
+
 // The smoke case with the push front's far field, and the command that runs it with `extra` options
 fs::path push_front_case() {
   const fs::path case_dir = kRoot / "push_front_case";
@@ -219,13 +225,14 @@ TEST_F(Restart, TruncatedNewestRestartFallsBackToThePreviousOne) {
   expect_same_as_a(d, "newest restart truncated, resume from 80");
 }
 
-// --cull with frozen spheres left out of collision detection (the default) vs kept in it (--cull-keep-geoms):
+// The far field with frozen spheres left out of collision detection (the default) vs kept in it
+// (ode.idle_geoms_out: false):
 // the same contacts, so the same run to the last bit; and a resume restores the left-out set.
 TEST_F(Restart, CullGeomsGiveTheSameRunAndResume) {
-  const std::string cull = " --cull --cull-ahead 0.02 --cull-behind 0.02 --cull-side 0";
+  const std::string cull = kFarFieldBeside;
   const fs::path f = kRoot / "F", g = kRoot / "G", h = kRoot / "H";
   ASSERT_EQ(run(base_cmd(f) + cull + " > /dev/null"), 0);
-  ASSERT_EQ(run(base_cmd(g) + cull + " --cull-keep-geoms > /dev/null"), 0);
+  ASSERT_EQ(run(base_cmd(g) + cull + " --set ode.idle_geoms_out=false > /dev/null"), 0);
   const std::string meta_f = slurp(f / "meta.json"), meta_g = slurp(g / "meta.json");
   const auto out_max = [](const std::string& meta) {
     const auto p = meta.find("\"cull_geoms_out_max\": ");
@@ -288,15 +295,16 @@ TEST_F(Restart, SettlingThenPushFrontResumesOnItsSchedule) {
 // are made in a fixed order: the runs are the same to the last bit, plain, with culling (frozen spheres as static
 // obstacles, deep ones out of collision detection) and with end walls; a run resumes with the broad phase it had.
 TEST_F(Restart, GridAndSapBroadPhasesGiveTheSameRun) {
-  const std::string cull = " --cull --cull-ahead 0.02 --cull-behind 0.02 --cull-side 0";
+  const std::string cull = kFarFieldBeside;
   const fs::path s = kRoot / "S", gc = kRoot / "GC", sc = kRoot / "SC", gw = kRoot / "GW", sw = kRoot / "SW";
   ASSERT_EQ(run(base_cmd(s) + " --broad-phase sap > /dev/null"), 0);
   ASSERT_EQ(run(base_cmd(gc) + cull + " > /dev/null"), 0);
   ASSERT_EQ(run(base_cmd(sc) + cull + " --broad-phase sap > /dev/null"), 0);
-  ASSERT_EQ(run(base_cmd(gw) + " --end-walls > /dev/null"), 0);
-  ASSERT_EQ(run(base_cmd(sw) + " --end-walls --broad-phase sap > /dev/null"), 0);
-  EXPECT_NE(slurp(kRoot / "A" / "meta.json").find("\"broad_phase\": \"grid\""), std::string::npos);
-  EXPECT_NE(slurp(s / "meta.json").find("\"broad_phase\": \"sap\""), std::string::npos);
+  ASSERT_EQ(run(base_cmd(gw) + " --set channel.ends=walls > /dev/null"), 0);
+  ASSERT_EQ(run(base_cmd(sw) + " --set channel.ends=walls --broad-phase sap > /dev/null"), 0);
+  EXPECT_NE(slurp(kRoot / "A" / "case.yaml").find("\n  broad_phase: grid\n"), std::string::npos);
+  EXPECT_NE(slurp(s / "case.yaml").find("\n  broad_phase: sap\n"), std::string::npos);
+  EXPECT_NE(slurp(gw / "case.yaml").find("\n  ends: walls\n"), std::string::npos);
   for (const auto& [grid, sap] : {std::pair{kRoot / "A", s}, std::pair{gc, sc}, std::pair{gw, sw}}) {
     SCOPED_TRACE(grid.filename().string());
     const std::string f = slurp(grid / "hull_force.csv");
@@ -312,19 +320,19 @@ TEST_F(Restart, GridAndSapBroadPhasesGiveTheSameRun) {
   const fs::path r = kRoot / "SR";
   ASSERT_EQ(run(base_cmd(r) + " --broad-phase sap --crash-after-step 230"), 137);
   ASSERT_EQ(run(resume_cmd(r)), 0);
-  EXPECT_NE(slurp(r / "meta.json").find("\"broad_phase\": \"sap\""), std::string::npos);
+  EXPECT_NE(slurp(r / "case.yaml").find("\n  broad_phase: sap\n"), std::string::npos);
   EXPECT_LE(max_diff(s / "hull_force.csv", r / "hull_force.csv", 1, 4), 1e-6);
 }
 
-// --sphere-order packing adds the bodies in the packing file's order instead of the spatial one: the same
+// ode.sphere_order packing (--sphere-order) adds the bodies in the packing file's order instead of the spatial one: the same
 // pieces under the same ids at the same places (the dumps list them in the bodies' order), a run that differs
 // from the spatial one only as far as the order of ODE's constraint rows changes its sums, and one that a resume
 // goes on with.
 TEST_F(Restart, PackingSphereOrderKeepsTheIdsAndResumesInItsOrder) {
   const fs::path p = kRoot / "P", pr = kRoot / "PR";
   ASSERT_EQ(run(base_cmd(p) + " --sphere-order packing > /dev/null"), 0);
-  EXPECT_NE(slurp(p / "meta.json").find("\"sphere_order\": \"packing\""), std::string::npos);
-  EXPECT_NE(slurp(kRoot / "A" / "meta.json").find("\"sphere_order\": \"spatial\""), std::string::npos);
+  EXPECT_NE(slurp(p / "case.yaml").find("\n  sphere_order: packing\n"), std::string::npos);
+  EXPECT_NE(slurp(kRoot / "A" / "case.yaml").find("\n  sphere_order: spatial\n"), std::string::npos);
   auto a0 = read_csv(kRoot / "A" / "particles" / "particles_0.csv");
   auto p0 = read_csv(p / "particles" / "particles_0.csv");
   ASSERT_EQ(a0.size(), 720u);
@@ -344,7 +352,7 @@ TEST_F(Restart, PackingSphereOrderKeepsTheIdsAndResumesInItsOrder) {
   EXPECT_NEAR(fp / fa, 1.0, 0.02) << "mean Fx, packing order / spatial order";
   ASSERT_EQ(run(base_cmd(pr) + " --sphere-order packing --crash-after-step 230"), 137);
   ASSERT_EQ(run(resume_cmd(pr)), 0);
-  EXPECT_NE(slurp(pr / "meta.json").find("\"sphere_order\": \"packing\""), std::string::npos);
+  EXPECT_NE(slurp(pr / "case.yaml").find("\n  sphere_order: packing\n"), std::string::npos);
   EXPECT_LE(max_diff(p / "hull_force.csv", pr / "hull_force.csv", 1, 4), 1e-6);
   EXPECT_LE(max_diff(p / "particles" / "particles_400.csv", pr / "particles" / "particles_400.csv", 1, 4), 1e-9);
 }
@@ -413,6 +421,106 @@ TEST_F(Restart, NoUsableRestartFileIsAClearError) {
   const std::string msg = slurp(err);
   EXPECT_NE(msg.find("no usable restart file"), std::string::npos) << msg;
   EXPECT_NE(msg.find("restart_0000000080.bin: not a brash-ode restart file or truncated"), std::string::npos) << msg;
+}
+
+// brash-ode's settings are case keys: a short form (--dt, --iterations) is the same change of the case as --set,
+// the run folder's case.yaml records it and meta.json holds no second copy; a resume runs as that case.yaml says
+// and takes no change of it; a bad value is refused naming the key.
+TEST_F(Restart, SettingsAreCaseKeysThatTheRunFolderRecords) {
+  const fs::path s = kRoot / "short", k = kRoot / "keys", r = kRoot / "short_resumed", err = kRoot / "keys.err";
+  ASSERT_EQ(run(base_cmd(s) + " --dt 1e-3 --iterations 12 > /dev/null"), 0);
+  ASSERT_EQ(run(base_cmd(k) + " --set ode.timestep_s=1e-3 --set ode.iterations=12 > /dev/null"), 0);
+  const std::string yaml = slurp(s / "case.yaml");
+  EXPECT_NE(yaml.find("\node:\n  timestep_s: 0.001\n  iterations: 12\n"), std::string::npos) << yaml;
+  EXPECT_EQ(yaml, slurp(k / "case.yaml"));
+  EXPECT_GT(slurp(s / "hull_force.csv").size(), 200u);
+  EXPECT_EQ(slurp(s / "hull_force.csv"), slurp(k / "hull_force.csv"));
+  EXPECT_NE(slurp(s / "hull_force.csv"), slurp(kRoot / "A" / "hull_force.csv"));  // the settings did act
+  const auto meta = nlohmann::json::parse(slurp(s / "meta.json"));
+  EXPECT_FALSE(meta.contains("ode_options")) << meta.dump();
+  EXPECT_EQ(meta.value("dt_s", 0.0), 1e-3);
+  EXPECT_EQ(meta["stepper"].value("quickstep_iterations", 0), 12);
+  ASSERT_EQ(run(base_cmd(r) + " --dt 1e-3 --iterations 12 --crash-after-step 130"), 137);
+  EXPECT_EQ(run(std::string("'") + BRASH_ODE_EXE + "' --resume '" + r.string() + "' --dt 5e-4 --no-post 2> '" +
+                err.string() + "'"),
+            2);
+  EXPECT_NE(slurp(err).find("--resume continues a run as it was set up (its case.yaml)"), std::string::npos)
+      << slurp(err);
+  ASSERT_EQ(run(resume_cmd(r)), 0);
+  EXPECT_LE(max_diff(s / "hull_force.csv", r / "hull_force.csv", 1, 4), 1e-6);
+  EXPECT_EQ(run(base_cmd(kRoot / "bad_dt") + " --dt 0 2> '" + err.string() + "'"), 2);
+  EXPECT_NE(slurp(err).find("key 'ode.timestep_s': must be > 0"), std::string::npos) << slurp(err);
+  EXPECT_FALSE(fs::exists(kRoot / "bad_dt" / "meta.json"));
+}
+
+// What brash-ode wrote into meta.json as "ode_options" before its settings were case keys (a run's case.yaml then
+// had no ode: section): here a time step of 1e-3 s, the packing's order and --cull's window (0.08 m ahead, 0.02 m
+// behind and beside, membership every 20 ODE steps), the rest brash-ode's defaults.
+nlohmann::json ode_options_before_the_keys() {
+  return {{"case_dir", BRASH_SMOKE_CASE}, {"duration_s", 0.2}, {"model", ""}, {"treatment", ""}, {"dt_s", 1e-3},
+          {"iterations", 8}, {"erp", 0.2}, {"cfm", 1e-5}, {"contact_surface_layer_m", 0.0},
+          {"max_contacts_per_pair", 8}, {"angular_damping", 0.0}, {"broad_phase", "grid"},
+          {"sphere_order", "packing"}, {"auto_disable", false}, {"disable_linear_m_s", 0.005},
+          {"disable_angular_rad_s", 0.5}, {"disable_steps", 20}, {"auto_disable_far_only", true}, {"cull", true},
+          {"cull_ahead_m", 0.08}, {"cull_behind_m", 0.02}, {"cull_side_m", 0.0}, {"cull_every", 20},
+          {"cull_geoms", true}, {"cull_wake_force_weight", -1.0}, {"cull_wake_speed_m_s", -1.0},
+          {"implicit", "effective_mass"}, {"end_walls", false}, {"settle_s", 0.0}, {"settle_damping", 0.0},
+          {"overlap_tolerance_over_d", 1e-4}, {"restart_every_s", 0.04}, {"scene_from", ""}, {"scene_time_s", 0.0}};
+}
+
+// The run folder `dir` as brash-ode left it before the ode: keys: the plain smoke case's case.yaml (run A's, no
+// far field) without its ode: section, and `options` in meta.json.
+void make_run_from_before_the_keys(const fs::path& dir, const nlohmann::json& options) {
+  std::string yaml = slurp(kRoot / "A" / "case.yaml");
+  const auto at = yaml.find("\node:\n");
+  ASSERT_NE(at, std::string::npos) << yaml;
+  auto end = at + 1;
+  while ((end = yaml.find('\n', end)) != std::string::npos && end + 1 < yaml.size() && yaml[end + 1] == ' ') ++end;
+  yaml.erase(at + 1, end == std::string::npos ? std::string::npos : end - at);
+  ASSERT_EQ(yaml.find("\node:"), std::string::npos) << yaml;
+  std::ofstream(dir / "case.yaml") << yaml;
+  auto meta = nlohmann::json::parse(slurp(dir / "meta.json"));
+  meta["ode_options"] = options;
+  std::ofstream(dir / "meta.json") << meta.dump(2);
+}
+
+// A run folder from before the ode: keys resumes: its "ode_options" move into its case.yaml as the keys that give
+// the same run (the ode: section; --cull as speedups.farfield_*), meta.json keeps no copy, and the run ends as the
+// uninterrupted run with those keys does. Options the keys cannot give are refused naming meta.json, the folder
+// left as it was.
+TEST_F(Restart, RunFolderFromBeforeTheOdeKeysResumesWithItsSettingsInItsCase) {
+  const fs::path full = kRoot / "keys_full", old = kRoot / "old", bad = kRoot / "old_bad";
+  const std::string keys = " --dt 1e-3 --sphere-order packing" + kFarFieldBeside +
+                           " --set speedups.farfield_every_steps=200";  // 20 ODE steps of 1e-3 s in steps of 1e-4 s
+  ASSERT_EQ(run(base_cmd(full) + keys + " > /dev/null"), 0);
+  ASSERT_EQ(run(base_cmd(old) + keys + " --crash-after-step 130"), 137);
+  make_run_from_before_the_keys(old, ode_options_before_the_keys());
+  fs::copy(old, bad, fs::copy_options::recursive);
+  auto options = ode_options_before_the_keys();
+  options["max_contacts_per_pair"] = 4;
+  make_run_from_before_the_keys(bad, options);
+  const std::string bad_yaml = slurp(bad / "case.yaml");
+  const fs::path err = kRoot / "old_bad.err";
+  EXPECT_EQ(run(resume_cmd(bad) + " 2> '" + err.string() + "'"), 2);
+  EXPECT_NE(slurp(err).find((bad / "meta.json").string() + ": \"ode_options\": max_contacts_per_pair is not 8"),
+            std::string::npos)
+      << slurp(err);
+  EXPECT_EQ(slurp(bad / "case.yaml"), bad_yaml);
+  EXPECT_TRUE(nlohmann::json::parse(slurp(bad / "meta.json")).contains("ode_options"));
+
+  ASSERT_EQ(run(resume_cmd(old)), 0);
+  const std::string yaml = slurp(old / "case.yaml");
+  for (const char* line : {"\n  farfield: true\n", "\n  farfield_ahead_m: 0.08\n", "\n  farfield_beside_m: 0.0\n",
+                           "\n  farfield_every_steps: 200\n", "\node:\n  timestep_s: 0.001\n",
+                           "\n  sphere_order: packing\n"})
+    EXPECT_NE(yaml.find(line), std::string::npos) << line << " in\n" << yaml;
+  const auto meta = nlohmann::json::parse(slurp(old / "meta.json"));
+  EXPECT_FALSE(meta.contains("ode_options"));
+  EXPECT_EQ(meta.value("status", std::string()), "complete");
+  EXPECT_EQ(meta["skips"].value("cull_every_steps", 0), 20);
+  EXPECT_EQ(yaml, slurp(full / "case.yaml"));
+  EXPECT_LE(max_diff(full / "hull_force.csv", old / "hull_force.csv", 1, 4), 1e-6);
+  EXPECT_LE(max_diff(full / "particles" / "particles_200.csv", old / "particles" / "particles_200.csv", 1, 4), 1e-9);
 }
 
 }  // namespace

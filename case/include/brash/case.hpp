@@ -200,6 +200,37 @@ struct GuardSpec {
   bool operator==(const GuardSpec&) const = default;
 };
 
+// brash-ode's own numerics (docs/ode.md): its time step and solver, the broad phase, the order of its bodies,
+// ODE's auto-disable and a settling before t = 0. The other engines ignore the section.
+// ode.implicit: how the implicit added mass is realised in ODE (brash/ode/world.hpp): effective_mass (the body
+// mass m + m_a,h) or scale_forces (the external forces scaled, contacts see m).
+enum class OdeImplicit { EffectiveMass, ScaleForces };  // YAML: effective_mass | scale_forces
+enum class OdeBroadPhase { Grid, Sap };                 // YAML: grid | sap
+enum class OdeSphereOrder { Spatial, Packing };         // YAML: spatial | packing
+std::string_view to_string(OdeImplicit v);
+std::string_view to_string(OdeBroadPhase v);
+std::string_view to_string(OdeSphereOrder v);
+
+struct OdeSpec {
+  double timestep_s = 5e-4;             // ODE's step (run.timestep_s is the soft-contact DEM step)
+  int iterations = 8;                   // dWorldQuickStep iterations
+  double erp = 0.2;                     // world ERP
+  double cfm = 1e-5;                    // world CFM
+  double surface_layer_m = 0.0;         // contact surface layer (a settled bed: at least its largest overlap)
+  double angular_damping = 0.0;         // ODE's angular damping per step (fluid torque is neglected)
+  OdeImplicit implicit = OdeImplicit::EffectiveMass;
+  OdeBroadPhase broad_phase = OdeBroadPhase::Grid;
+  OdeSphereOrder sphere_order = OdeSphereOrder::Spatial;
+  bool idle_geoms_out = true;           // idle far-field pieces deep in the idle zone leave collision detection
+  bool auto_disable = false;            // ODE's auto-disable of resting pieces outside the far field's window
+  double auto_disable_linear_m_s = 0.005;
+  double auto_disable_angular_rad_s = 0.5;
+  int auto_disable_steps = 20;
+  double settle_s = 0.0;                // the whole bed integrated this long before t = 0, the hull parked
+  double settle_damping = 0.0;          // ODE's velocity damping per step over the settling's first half
+  bool operator==(const OdeSpec&) const = default;
+};
+
 // Optional overrides of the FSICR hull parameters measured on the STL (full scale).
 struct FsicrOverrides {
   std::optional<double> alpha_deg, phi1_deg, phi2_deg, psi_deg, L_par_m, L_bow_m, A_wf_m2;
@@ -232,6 +263,7 @@ struct Case {
   FsicrOverrides fsicr;
   SpeedupSpec speedups;
   GuardSpec guards;
+  OdeSpec ode;
   ReferenceSpec references;
   bool operator==(const Case&) const = default;
 };

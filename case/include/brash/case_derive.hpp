@@ -57,8 +57,8 @@ bool same_packing_inputs(const Case& a, const Case& b);
 // Published references (references:) describe one hull, ship speed, ice and fluid: the dotted keys of the resolved
 // case whose value differs between `base` and `variant` and that change what references describe, i.e. every key
 // but those of how the run is computed (docs/case_format.md "references": name, description, run.*, speedups.*,
-// guards.*, fsicr.*, contact.youngs_modulus_pa, fluid.model, fluid.treatment, hull.band_m, hull.start_x_m, ice.seed,
-// ice.settle, ice.settle_speed_m_s, ice.packing_file). Empty: the variant may keep the base's references.
+// guards.*, ode.*, fsicr.*, contact.youngs_modulus_pa, fluid.model, fluid.treatment, hull.band_m, hull.start_x_m,
+// ice.seed, ice.settle, ice.settle_speed_m_s, ice.packing_file). Empty: the variant may keep the base's references.
 std::vector<std::string> keys_beyond_references(const Case& base, const Case& variant);
 
 // The value of a dotted key in the resolved case (every default filled in, paths absolute), as dump_case_yaml

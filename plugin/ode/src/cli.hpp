@@ -1,93 +1,85 @@
-// Command-line options shared by brash-ode and bench-ode.
+// The command line of brash-ode and bench-ode: the run driver's options (brash/run/driver_cli.hpp: CASE_DIR or
+// --resume RUN_DIR, --out, --duration, --model, --treatment, --set KEY=VALUE, --restart-every, ...), short forms of
+// the case's ode: keys (--dt S is --set ode.timestep_s=S: a change of the case, which the run directory's case.yaml
+// records), and what a run takes besides its case (RunOptions).
 #pragma once
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
 
+#include <filesystem>
 #include <map>
 #include <string>
+#include <vector>
 
+#include "brash/case.hpp"
 #include "brash/ode/run_case.hpp"
+#include "brash/run/driver_cli.hpp"
 
 namespace brash::ode {
 
-inline void add_run_options(CLI::App& app, RunOptions& o, std::string& implicit_mode) {
-  app.add_option("--out", o.out_dir, "run directory (default: <runs-root>/<case>-ode-<model>-<stamp>)");
-  app.add_option("--runs-root", o.runs_root, "where run directories are created")->capture_default_str();
-  app.add_option("--duration", o.duration_s, "simulated time [s] (default: the case's run.duration_s)");
-  app.add_option("--model", o.model, "override fluid.model: drag | added_mass | both");
-  app.add_option("--treatment", o.treatment, "override fluid.treatment: implicit | explicit");
-  app.add_option("--dt", o.stepper.dt_s, "ODE time step [s] (the case's run.timestep_s is the DEM step)")->capture_default_str();
-  app.add_option("--iterations", o.stepper.iterations, "dWorldQuickStep iterations")->capture_default_str();
-  app.add_option("--erp", o.stepper.erp, "world ERP")->capture_default_str();
-  app.add_option("--cfm", o.stepper.cfm, "world CFM")->capture_default_str();
-  app.add_option("--surface-layer", o.stepper.contact_surface_layer, "contact surface layer [m]")->capture_default_str();
-  app.add_option("--angular-damping", o.stepper.angular_damping, "ODE angular damping per step (fluid torque is neglected)")
-      ->capture_default_str();
-  app.add_option("--implicit", implicit_mode, "implicit added mass in ODE: effective_mass | scale_forces")
-      ->check(CLI::IsMember({"effective_mass", "scale_forces"}))
-      ->capture_default_str();
-  app.add_option("--broad-phase", o.stepper.broad_phase,
-                 "broad phase: grid (ours, follows the active spheres) | sap (ODE's sweep and prune); same contacts")
-      ->transform(CLI::CheckedTransformer(std::map<std::string, BroadPhase>{{to_string(BroadPhase::Grid), BroadPhase::Grid},
-                                                                            {to_string(BroadPhase::Sap), BroadPhase::Sap}}))
-      ->option_text("TEXT:{grid,sap}=grid");
-  app.add_option("--sphere-order", o.sphere_order,
-                 "order of the ODE bodies: spatial (cells of two mean diameters) | packing (the packing "
-                 "file's; slower)")
-      ->transform(CLI::CheckedTransformer(
-          std::map<std::string, SphereOrder>{{to_string(SphereOrder::Spatial), SphereOrder::Spatial},
-                                             {to_string(SphereOrder::Packing), SphereOrder::Packing}}))
-      ->option_text("TEXT:{spatial,packing}=spatial");
-  app.add_flag("--auto-disable", o.skips.auto_disable, "ODE auto-disable of resting spheres far from the hull (a speed-up)");
-  app.add_option("--disable-linear", o.skips.disable_linear_m_s, "auto-disable linear speed threshold [m/s]")
-      ->capture_default_str();
-  app.add_option("--disable-angular", o.skips.disable_angular_rad_s, "auto-disable angular speed threshold [rad/s]")
-      ->capture_default_str();
-  app.add_flag("--cull", o.skips.cull,
-               "freeze spheres outside a window around the hull (static obstacles) until pushed "
-               "(the far-field rule of fix brash/farfield; on with the case's speedups.farfield: true)");
-  app.add_option("--cull-ahead", o.cull_ahead_m,
-                 "cull/auto-disable: active distance ahead of the bow [m] (default: the case's "
-                 "speedups.farfield_ahead_m with farfield: true, else 1)")
-      ->check(CLI::NonNegativeNumber);
-  app.add_option("--cull-behind", o.cull_behind_m,
-                 "cull/auto-disable: active distance behind the stern [m] (default: the case's "
-                 "speedups.farfield_behind_m with farfield: true, else 1)")
-      ->check(CLI::NonNegativeNumber);
-  app.add_option("--cull-side", o.cull_side_m,
-                 "cull/auto-disable: active distance beside the hull's half beam [m] (default: the case's "
-                 "speedups.farfield_beside_m, else the whole width)")
-      ->check(CLI::NonNegativeNumber);
-  app.add_option("--cull-wake-weight", o.cull_wake_force_weight,
-                 "cull: a frozen sphere wakes when the horizontal force on it exceeds this fraction of the weight of "
-                 "a piece of the mean diameter; 0 = the window alone (default: the case's "
-                 "speedups.farfield_wake_force_weight)")
-      ->check(CLI::NonNegativeNumber);
-  app.add_option("--cull-wake-speed", o.cull_wake_speed_m_s,
-                 "cull: behind the stern a sphere is frozen once no faster than this [m/s] (default: the case's "
-                 "speedups.farfield_wake_speed_m_s)")
-      ->check(CLI::NonNegativeNumber);
-  app.add_flag_callback("--cull-keep-geoms", [&o] { o.skips.cull_geoms = false; },
-                        "cull: keep every frozen sphere in collision detection (slower, same contacts; for checking)");
-  app.add_flag("--end-walls", o.end_walls, "the case with channel.ends: walls (walls at x = 0 and x = length)");
-  app.add_option("--settle", o.settle_s, "settle the whole bed this long [s] before t = 0, the hull parked and every piece "
-                 "integrated (a far field begins after it)")
-      ->capture_default_str();
-  app.add_option("--settle-damping", o.settle_damping,
-                 "velocity damping per step over the settling's first half (ODE's body damping; its second half "
-                 "is free), to bring the bed to rest on ODE's own contacts")
-      ->check(CLI::Range(0.0, 0.5))
-      ->capture_default_str();
-  app.add_flag_callback("--no-progress", [&o] { o.progress = false; }, "no progress line on stderr");
-  app.add_option("--restart-every", o.restart_every_s, "simulated time between restart files in RUN_DIR/restart [s] (0 = none)")
-      ->capture_default_str();
+// An option that is a short form of `--set KEY=VALUE`.
+struct KeyOption {
+  const char* option;
+  const char* key;
+  const char* help;
+};
+inline constexpr KeyOption kKeyOptions[] = {
+    {"--dt", "ode.timestep_s", "ODE time step [s] (the case's run.timestep_s is the soft-contact step)"},
+    {"--iterations", "ode.iterations", "dWorldQuickStep iterations"},
+    {"--implicit", "ode.implicit", "implicit added mass in ODE: effective_mass | scale_forces"},
+    {"--broad-phase", "ode.broad_phase", "broad phase: grid (ours) | sap (ODE's sweep and prune); same contacts"},
+    {"--sphere-order", "ode.sphere_order",
+     "order of the ODE bodies: spatial (cells of two mean diameters) | packing (the packing file's; slower)"},
+    {"--settle", "ode.settle_s",
+     "settle the whole bed this long [s] before t = 0, the hull parked (a far field begins after it)"},
+    {"--settle-damping", "ode.settle_damping", "velocity damping per step over the settling's first half"},
+};
+
+// The driver's options, the short forms of the ode: keys, --no-progress and the hidden testing options.
+inline run::DriverCli add_ode_options(CLI::App& app, run::DriverOptions& d, RunOptions& o) {
+  const run::DriverCli cli =
+      run::add_driver_options(app, d, "ode", "case.yaml; the scene is built in brash-ode",
+                              run::RestartOff{fmt::format("{} s; on --resume the run's own", RunOptions{}.restart_every_s)});
+  for (const KeyOption& k : kKeyOptions)
+    app.add_option_function<std::string>(
+           k.option, [&d, key = k.key](const std::string& v) { d.overrides.sets.emplace_back(key, v); },
+           fmt::format("{} (--set {}=VALUE; default: the case's)", k.help, k.key))
+        ->type_name("VALUE");
+  app.add_flag_callback("--no-progress", [&o, &d] { o.progress = d.progress = false; }, "no progress line on stderr");
   // Testing only: exit like a kill -9 (no cleanup, no final outputs) right after this step.
   app.add_option("--crash-after-step", o.crash_after_step)->group("");
   // Testing only: a SIGTERM arriving during this step (the handled stop: resumable at this step).
   app.add_option("--stop-after-step", o.stop_after_step)->group("");
+  return cli;
 }
 
-inline ImplicitMode parse_implicit_mode(const std::string& s) {
-  return s == "scale_forces" ? ImplicitMode::ScaleForces : ImplicitMode::EffectiveMass;
+// The run options with the driver's --restart-every (not given: RunOptions' default), and the driver's interval
+// between its own records set to the same.
+inline void take_restart_every(run::DriverOptions& d, RunOptions& o) {
+  if (d.restart_every_s >= 0) o.restart_every_s = d.restart_every_s;
+  d.restart_every_s = o.restart_every_s;
+}
+
+// The settings of a scene without a case file (brash-ode --single, bench-ode --bed): the default case with the
+// command line's case keys, validated as a case file's. Throws InputError naming the key.
+inline Case case_of_command_line(const run::CaseOverrides& overrides) {
+  std::map<std::string, std::vector<std::pair<std::string, std::string>>> sections;
+  auto sets = overrides.sets;
+  if (!overrides.treatment.empty()) sets.emplace_back("fluid.treatment", overrides.treatment);
+  if (!overrides.model.empty()) sets.emplace_back("fluid.model", overrides.model);
+  std::string yaml = "name: command line\n";
+  for (const auto& [key, value] : sets) {
+    const auto dot = key.find('.');
+    if (dot == std::string::npos)
+      yaml += key + ": " + value + "\n";  // (a top-level key: the loader names it)
+    else
+      sections[key.substr(0, dot)].emplace_back(key.substr(dot + 1), value);
+  }
+  for (const auto& [section, keys] : sections) {
+    yaml += section + ":\n";
+    for (const auto& [key, value] : keys) yaml += "  " + key + ": " + value + "\n";
+  }
+  return parse_case(yaml, std::filesystem::current_path(), "the command line's case keys");
 }
 
 }  // namespace brash::ode

@@ -16,13 +16,6 @@ namespace brash::ode {
 
 std::string read_text(const std::filesystem::path& p);
 
-// Every option that shapes the run, stored in meta.json ("ode_options") so that --resume rebuilds the same scene.
-nlohmann::json options_json(const RunOptions& o);
-
-// The skips the run applies: --cull's window and wake rule in SI units, the case's far field (speedups.farfield_*)
-// unless given on the command line (brash/core/far_field.hpp).
-Skips cull_skips(const RunOptions& o, const Case& c);
-
 // Another run's particle dump (RunOptions::scene_from): its pieces and their velocities, in the file's order.
 struct SceneFromDump {
   std::vector<Sphere> spheres;

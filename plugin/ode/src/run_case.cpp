@@ -51,7 +51,10 @@ struct OdeEngine::Scene {
   std::unique_ptr<hull::Proximity> hull_query;  // the full closed hull, for the penetration guard
   bool hull_closed = false;
   core::FlowTable hull_flow;          // fluid.hull_flow from the full hull
+  StepperSettings stepper;            // the case's (stepper_settings), the surface layer raised for a settled bed
   bool surface_layer_from_bed = false;  // the contact surface layer is the settled bed's largest overlap
+  Skips skips;                        // far_field_skips of the case
+  ImplicitMode implicit = ImplicitMode::EffectiveMass;
   std::vector<Vec3> velocity_m_s;     // the pieces' starting velocities (--scene-from; empty: at rest)
 };
 
@@ -59,13 +62,14 @@ OdeEngine::OdeEngine(RunOptions options) : options_(std::move(options)) {}
 OdeEngine::~OdeEngine() = default;
 
 nlohmann::json OdeEngine::meta() const {
-  const auto& st = options_.stepper;
-  const Skips k = scene_ ? cull_skips(options_, scene_->c) : options_.skips;
+  if (!scene_) return {{"resumes", nlohmann::json::array()}};
+  const auto& st = scene_->stepper;
+  const Skips& k = scene_->skips;
   return {
       {"engine_version", fmt::format("brash-ode 0.1 + ODE {} (Debian libode, double, dWorldQuickStep)", "0.16.2")},
-      {"implicit_realisation",
-       options_.implicit_mode == ImplicitMode::EffectiveMass ? "effective_mass" : "scale_forces"},
+      {"implicit_realisation", to_string(scene_->c.ode.implicit)},
       {"dt_s", st.dt_s},
+      {"restart_every_s", options_.restart_every_s},  // a resume keeps it (restart_every_of_run)
       {"ranks", 1},
       {"threads", 1},
       {"stepper", {{"quickstep_iterations", st.iterations}, {"erp", st.erp}, {"cfm", st.cfm},
@@ -80,9 +84,6 @@ nlohmann::json OdeEngine::meta() const {
                  {"cull_wake_force_N", k.wake_force_N}, {"cull_wake_speed_m_s", k.wake_speed_m_s},
                  {"cull_wake_by", std::string(to_string(k.wake_by))},
                  {"cull_front_speed_m_s", k.front_speed_m_s}}},
-      {"end_walls", options_.end_walls},
-      {"settle_s", options_.settle_s},
-      {"ode_options", options_json(options_)},
       {"resumes", nlohmann::json::array()}};
 }
 
@@ -94,17 +95,7 @@ OdeEngine::WakeRefusal OdeEngine::wake_refusal(WakeBy by) const {
           WakeBy::Force};
 }
 
-void OdeEngine::load(const Case& case_in, const fs::path& case_file, const std::vector<Sphere>& packing) {
-  const auto& st = options_.stepper;
-  if (!(st.dt_s > 0) || !std::isfinite(st.dt_s)) throw InputError(fmt::format("--dt {}: must be > 0", st.dt_s));
-  // The neighbour-speed wake needs the pushed ice to move into the idle ice (the driver refuses it with the case's
-  // far field; here --cull with the case's wake rule)
-  if (const Skips k = cull_skips(options_, case_in); k.cull)
-    if (const WakeRefusal no = wake_refusal(k.wake_by); !no.why.empty())
-      throw InputError(fmt::format("{}: speedups.farfield_wake_by: {}: {}. Run a copy made with "
-                                   "`brash-case derive {} --set speedups.farfield_wake_by={} --out DIR`",
-                                   case_file.string(), to_string(k.wake_by), no.why, case_file.parent_path().string(),
-                                   to_string(no.instead)));
+void OdeEngine::load(const Case& case_in, const fs::path& /*case_file*/, const std::vector<Sphere>& packing) {
   scene_ = std::make_unique<Scene>();
   Scene& s = *scene_;
   Case c = case_in;
@@ -119,17 +110,20 @@ void OdeEngine::load(const Case& case_in, const fs::path& case_file, const std::
   const bool soft_bed = c.ice.settle || from_dump;
   const fs::path bed_file = from_dump ? options_.scene_from : c.ice.settle ? settled_packing_file(c) : c.ice.packing_file;
   if (spheres.empty()) throw InputError(bed_file.string() + ": no spheres");
-  const double tolerance_over_d = soft_bed ? kSettledBedMaxOverlapOverD : options_.overlap_tolerance_over_d;
+  const double tolerance_over_d = soft_bed ? kSettledBedMaxOverlapOverD : kPackingMaxOverlapOverD;
   const double largest_overlap_m =
       check_packing(spheres, bed_file, tolerance_over_d * c.ice.diameter_mean_m, 0.5 * c.channel.width_m);
   // The settled bed lies as LIGGGHTS' soft contacts left it, its pieces overlapping by up to ~1 % d. ODE's
   // rigid contacts would push every overlap apart at ERP's pace, stirring the bed it is meant to start from at
   // rest; a contact surface layer as deep as the largest overlap lets them lie (ODE corrects only the depth
   // beyond the layer) and is itself a ~1 % d give of every contact.
+  s.stepper = stepper_settings(c);
+  s.skips = far_field_skips(c);
+  s.implicit = implicit_mode(c);
   if (soft_bed) {
-    double& layer_m = options_.stepper.contact_surface_layer;
+    double& layer_m = s.stepper.contact_surface_layer;
     layer_m = std::max(layer_m, largest_overlap_m);
-    s.surface_layer_from_bed = layer_m == largest_overlap_m;  // (not a larger --surface-layer)
+    s.surface_layer_from_bed = layer_m == largest_overlap_m;  // (not a larger ode.surface_layer_m)
   }
   s.c = c;
   s.spheres = spheres;
@@ -178,7 +172,7 @@ class Stepping {
  public:
   Stepping(const RunOptions& o, const OdeEngine::Scene& s, const fs::path& run_dir, std::vector<run::ForceRow>& rows,
            run::Monitor& monitor)
-      : o_(o), s_(s), c_(s.c), dt_(o.stepper.dt_s), run_dir_(run_dir), rows_(rows), monitor_(monitor) {}
+      : o_(o), s_(s), c_(s.c), dt_(s.stepper.dt_s), run_dir_(run_dir), rows_(rows), monitor_(monitor) {}
   run::Attempt run(bool resume, RunSummary& summary);
 
  private:
@@ -221,14 +215,15 @@ void Stepping::log(const std::string& line) {
 }
 
 void Stepping::build_world() {
-  w_ = std::make_unique<World>(fluid_params(c_), o_.stepper, Frictions{c_.friction.ice_ice, c_.friction.ice_hull, c_.friction.ice_wall},
-                               cull_skips(o_, c_), o_.implicit_mode);
+  w_ = std::make_unique<World>(fluid_params(c_), s_.stepper,
+                               Frictions{c_.friction.ice_ice, c_.friction.ice_hull, c_.friction.ice_wall}, s_.skips,
+                               s_.implicit);
   // by default in a spatial order (cells of two mean diameters): ODE's bodies, and its contact rows, then sit
   // in memory as in space; ids in every output are the packing's (order_)
   std::vector<Vec3> centres;
   centres.reserve(s_.spheres.size());
   for (const auto& p : s_.spheres) centres.emplace_back(p.x_m, p.y_m, p.z_m);
-  if (o_.sphere_order == SphereOrder::Spatial) {
+  if (c_.ode.sphere_order == OdeSphereOrder::Spatial) {
     order_ = core::spatial_order(centres, 2 * c_.ice.diameter_mean_m);
   } else {
     order_.resize(centres.size());
@@ -259,20 +254,20 @@ void Stepping::build_world() {
 }
 
 void Stepping::log_scene() {
-  const auto& st = o_.stepper;
+  const auto& st = s_.stepper;
   const auto& lim = s_.limits;
   log(fmt::format("{} spheres, {} hull triangles{}, channel {} x {} m, dt {} s, {} quickstep iterations, ERP {}, CFM {}",
                   s_.spheres.size(), s_.contact_mesh.faces.size(), c_.hull.band_m ? " (waterline band)" : "",
                   c_.channel.length_m, c_.channel.width_m, st.dt_s, st.iterations, st.erp, st.cfm));
   log(fmt::format("fluid model {} treatment {} (implicit realised as {}), ca_table {}, C_D {} ({})",
                   to_string(c_.fluid.model), to_string(c_.fluid.treatment),
-                  o_.implicit_mode == ImplicitMode::EffectiveMass ? "effective_mass" : "scale_forces",
+                  to_string(c_.ode.implicit),
                   to_string(c_.fluid.ca_table), c_.fluid.drag_coefficient, to_string(c_.fluid.drag_law)));
-  if (const Skips k = cull_skips(o_, c_); k.cull) {
+  if (const Skips& k = s_.skips; k.cull) {
     const core::WakeRule wake = k.wake_rule();
-    log(fmt::format("far field{}: idle beyond {} m ahead of the bow, {} m behind the stern{}; membership every {} "
+    log(fmt::format("far field (speedups.farfield): idle beyond {} m ahead of the bow, {} m behind the stern{}; membership every {} "
                     "steps; {}",
-                    c_.speedups.farfield ? " (speedups.farfield)" : " (--cull)", k.cull_ahead_m, k.cull_behind_m,
+                    k.cull_ahead_m, k.cull_behind_m,
                     k.cull_side_m < Skips{}.cull_side_m ? fmt::format(", {} m beyond the hull's half beam", k.cull_side_m) : "",
                     k.cull_every,
                     !wake.enabled()                       ? std::string("the window alone (no wake rule)")
@@ -306,13 +301,14 @@ void Stepping::log_scene() {
 // Optional settling of the whole bed with the hull parked and every piece integrated (the far field begins after
 // it; on resume the restart file holds the state after it), then the hull moves, with its flow.
 void Stepping::start_moving(bool resume) {
-  const long settle_steps = std::lround(o_.settle_s / dt_);
+  const OdeSpec& ode = c_.ode;
+  const long settle_steps = std::lround(ode.settle_s / dt_);
   w_->begin_cull_at_step(settle_steps);
   const long report_every = std::max(1L, std::lround(0.05 / dt_));
-  const long damped_steps = o_.settle_damping > 0 ? settle_steps / 2 : 0;
-  if (!resume && damped_steps) w_->set_damping(o_.settle_damping, o_.settle_damping);
+  const long damped_steps = ode.settle_damping > 0 ? settle_steps / 2 : 0;
+  if (!resume && damped_steps) w_->set_damping(ode.settle_damping, ode.settle_damping);
   for (long k = 0; !resume && k < settle_steps; ++k) {
-    if (k == damped_steps && damped_steps) w_->set_damping(0, o_.stepper.angular_damping);
+    if (k == damped_steps && damped_steps) w_->set_damping(0, s_.stepper.angular_damping);
     w_->step();
     if ((k + 1) % report_every == 0 || k + 1 == settle_steps) log(settle_progress(k + 1));
   }
@@ -342,7 +338,7 @@ std::string Stepping::settle_progress(long steps) const {
   }
   return fmt::format("settling {:.3f} of {} s ({} steps): {} of {} pieces faster than {} m/s, rms speed {:.3g} m/s, "
                      "largest {:.3g} m/s",
-                     double(steps) * dt_, o_.settle_s, steps, moving, w_->size(), idle_m_s,
+                     double(steps) * dt_, c_.ode.settle_s, steps, moving, w_->size(), idle_m_s,
                      std::sqrt(sum_v2 / double(std::max<std::size_t>(1, w_->size()))), max_v);
 }
 
@@ -524,6 +520,7 @@ void Stepping::conclude(run::Attempt& a, RunSummary& summary) {
   const Stats& st = w_->stats();
   summary.loop_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop0_).count();
   summary.steps = k_end_;
+  summary.dt_s = dt_;
   summary.simulated_s = double(k_end_) * dt_;
   summary.stats = st;
   summary.particle_steps = st.particle_steps - ps_loop0_;
@@ -580,8 +577,8 @@ run::Attempt OdeEngine::advance(const fs::path& run_dir, const std::string& rest
   // the record so far (written whole before each restart file); the restart point decides which rows stay
   if (resume && fs::exists(run_dir / "hull_force.csv"))
     rows_ = run::read_hull_force_csv(run_dir / "hull_force.csv", /*drop_unterminated_tail=*/false).rows;
-  if (const Skips k = cull_skips(options_, scene_->c); k.cull && !k.wake_rule().enabled())
-    fmt::print(stderr, "[brash-ode] warning: --cull with no wake rule (the window alone): the push of the bow "
+  if (const Skips& k = scene_->skips; k.cull && !k.wake_rule().enabled())
+    fmt::print(stderr, "[brash-ode] warning: the far field with no wake rule (the window alone): the push of the bow "
                        "cannot reach past the window and the mean resistance is biased high "
                        "(docs/performance.md, \"The idle far field\")\n");
   Stepping stepping(options_, *scene_, run_dir, rows_, monitor);

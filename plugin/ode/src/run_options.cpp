@@ -1,4 +1,5 @@
-// brash-ode's run options in meta.json (ode_options), for --resume; the --cull wake in SI units.
+// brash-ode's settings from the case (run_case.hpp): the stepper, the implicit realisation and the far field; a
+// particle dump as the starting scene (bench-ode --scene-from); run directories from before the ode: case keys.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -9,8 +10,10 @@
 #include <unordered_map>
 
 #include "brash/case.hpp"
+#include "brash/case_derive.hpp"
 #include "brash/core/far_field.hpp"
 #include "brash/error.hpp"
+#include "brash/run/run_layout.hpp"
 #include "ode_internal.hpp"
 
 namespace brash::ode {
@@ -21,46 +24,6 @@ std::string read_text(const fs::path& p) {
   std::ostringstream ss;
   ss << in.rdbuf();
   return ss.str();
-}
-
-// Every option that shapes the run, stored in meta.json so that --resume rebuilds the same scene.
-nlohmann::json options_json(const RunOptions& o) {
-  const auto& st = o.stepper;
-  const auto& k = o.skips;
-  return {{"case_dir", fs::absolute(o.case_dir).lexically_normal().string()},
-          {"duration_s", o.duration_s},
-          {"model", o.model},
-          {"treatment", o.treatment},
-          {"dt_s", st.dt_s},
-          {"iterations", st.iterations},
-          {"erp", st.erp},
-          {"cfm", st.cfm},
-          {"contact_surface_layer_m", st.contact_surface_layer},
-          {"max_contacts_per_pair", st.max_contacts_per_pair},
-          {"angular_damping", st.angular_damping},
-          {"broad_phase", to_string(st.broad_phase)},
-          {"sphere_order", to_string(o.sphere_order)},
-          {"auto_disable", k.auto_disable},
-          {"disable_linear_m_s", k.disable_linear_m_s},
-          {"disable_angular_rad_s", k.disable_angular_rad_s},
-          {"disable_steps", k.disable_steps},
-          {"auto_disable_far_only", k.auto_disable_far_only},
-          {"cull", k.cull},
-          {"cull_ahead_m", o.cull_ahead_m},
-          {"cull_behind_m", o.cull_behind_m},
-          {"cull_side_m", o.cull_side_m},
-          {"cull_every", k.cull_every},
-          {"cull_geoms", k.cull_geoms},
-          {"cull_wake_force_weight", o.cull_wake_force_weight},
-          {"cull_wake_speed_m_s", o.cull_wake_speed_m_s},
-          {"implicit", o.implicit_mode == ImplicitMode::EffectiveMass ? "effective_mass" : "scale_forces"},
-          {"end_walls", o.end_walls},
-          {"settle_s", o.settle_s},
-          {"settle_damping", o.settle_damping},
-          {"overlap_tolerance_over_d", o.overlap_tolerance_over_d},
-          {"restart_every_s", o.restart_every_s},
-          {"scene_from", o.scene_from.empty() ? std::string() : fs::absolute(o.scene_from).lexically_normal().string()},
-          {"scene_time_s", o.scene_time_s}};
 }
 
 // A particle dump (particles/*.csv of any engine's run: a header naming id,x,y,z,radius and optionally vx,vy,vz):
@@ -109,89 +72,179 @@ SceneFromDump read_scene_dump(const fs::path& file) {
   return out;
 }
 
-// The skips with --cull's wake rule in SI units: the case's unless given (brash/core/far_field.hpp).
-Skips cull_skips(const RunOptions& o, const Case& c) {
-  Skips k = o.skips;
+StepperSettings stepper_settings(const Case& c) {
+  const OdeSpec& o = c.ode;
+  StepperSettings st;
+  st.dt_s = o.timestep_s;
+  st.iterations = o.iterations;
+  st.erp = o.erp;
+  st.cfm = o.cfm;
+  st.contact_surface_layer = o.surface_layer_m;
+  st.angular_damping = o.angular_damping;
+  st.broad_phase = o.broad_phase == OdeBroadPhase::Sap ? BroadPhase::Sap : BroadPhase::Grid;
+  return st;
+}
+
+ImplicitMode implicit_mode(const Case& c) {
+  return c.ode.implicit == OdeImplicit::ScaleForces ? ImplicitMode::ScaleForces : ImplicitMode::EffectiveMass;
+}
+
+Skips far_field_skips(const Case& c) {
   const SpeedupSpec& sp = c.speedups;
-  const Skips defaults;
-  const auto pick = [&](double given, double from_case, double otherwise) {
-    return given >= 0 ? given : sp.farfield ? from_case : otherwise;
-  };
-  k.cull = k.cull || sp.farfield;
-  k.cull_ahead_m = pick(o.cull_ahead_m, sp.farfield_ahead_m, defaults.cull_ahead_m);
-  k.cull_behind_m = pick(o.cull_behind_m, sp.farfield_behind_m, defaults.cull_behind_m);
-  k.cull_side_m = pick(o.cull_side_m, sp.farfield_beside_m.value_or(defaults.cull_side_m), defaults.cull_side_m);
-  // the case's membership period in model time (farfield_every_steps DEM steps) in ODE steps
-  if (sp.farfield)
-    k.cull_every = std::max(1, static_cast<int>(std::lround(sp.farfield_every_steps * c.run.timestep_s / o.stepper.dt_s)));
-  const double weight =
-      o.cull_wake_force_weight >= 0 ? o.cull_wake_force_weight : c.speedups.farfield_wake_force_weight;
-  k.wake_force_N = core::wake_force_N(weight, c.ice.diameter_mean_m, c.ice.density_kg_m3, c.water.gravity_m_s2);
-  k.wake_speed_m_s = o.cull_wake_speed_m_s >= 0 ? o.cull_wake_speed_m_s : c.speedups.farfield_wake_speed_m_s;
-  k.wake_by = c.speedups.farfield_wake_by;
-  k.front_speed_m_s = c.speedups.farfield_front_speed_m_s;
+  const OdeSpec& o = c.ode;
+  Skips k;
+  k.auto_disable = o.auto_disable;
+  k.disable_linear_m_s = o.auto_disable_linear_m_s;
+  k.disable_angular_rad_s = o.auto_disable_angular_rad_s;
+  k.disable_steps = o.auto_disable_steps;
+  k.cull = sp.farfield;
+  k.cull_ahead_m = sp.farfield_ahead_m;
+  k.cull_behind_m = sp.farfield_behind_m;
+  k.cull_side_m = sp.farfield_beside_m.value_or(Skips{}.cull_side_m);
+  // the membership period in model time (farfield_every_steps DEM steps) in ODE steps
+  k.cull_every = std::max(1, static_cast<int>(std::lround(sp.farfield_every_steps * c.run.timestep_s / o.timestep_s)));
+  k.wake_force_N = core::wake_force_N(sp.farfield_wake_force_weight, c.ice.diameter_mean_m, c.ice.density_kg_m3,
+                                      c.water.gravity_m_s2);
+  k.wake_speed_m_s = sp.farfield_wake_speed_m_s;
+  k.wake_by = sp.farfield_wake_by;
+  k.front_speed_m_s = sp.farfield_front_speed_m_s;
+  k.cull_geoms = o.idle_geoms_out;
   return k;
 }
 
-RunOptions options_from_meta(const fs::path& run_dir, const RunOptions& cli) {
-  const fs::path mf = run_dir / "meta.json";
-  if (!fs::exists(mf)) throw InputError(fmt::format("--resume {}: no meta.json there (not a run directory?)", run_dir.string()));
-  nlohmann::json meta;
+namespace {
+
+// The far field a run from before the ode: case keys ran with: its --cull* options (negative: not given) over its
+// case's speedups.farfield_*, as that brash-ode merged them.
+Skips far_field_before_case_keys(const nlohmann::json& j, const Case& c) {
+  const SpeedupSpec& sp = c.speedups;
+  const Skips defaults;
+  Skips k;
+  k.auto_disable = j.at("auto_disable");
+  k.disable_linear_m_s = j.at("disable_linear_m_s");
+  k.disable_angular_rad_s = j.at("disable_angular_rad_s");
+  k.disable_steps = j.at("disable_steps");
+  k.auto_disable_far_only = j.at("auto_disable_far_only");
+  k.cull = j.at("cull").get<bool>() || sp.farfield;
+  const auto pick = [&](const char* given, double from_case, double otherwise) {
+    const double g = j.at(given);
+    return g >= 0 ? g : sp.farfield ? from_case : otherwise;
+  };
+  k.cull_ahead_m = pick("cull_ahead_m", sp.farfield_ahead_m, defaults.cull_ahead_m);
+  k.cull_behind_m = pick("cull_behind_m", sp.farfield_behind_m, defaults.cull_behind_m);
+  k.cull_side_m = pick("cull_side_m", sp.farfield_beside_m.value_or(defaults.cull_side_m), defaults.cull_side_m);
+  k.cull_every = sp.farfield ? std::max(1, static_cast<int>(std::lround(sp.farfield_every_steps * c.run.timestep_s /
+                                                                         j.at("dt_s").get<double>())))
+                             : j.at("cull_every").get<int>();
+  const double weight = j.value("cull_wake_force_weight", 0.0);  // runs before the wake: the window alone
+  k.wake_force_N = core::wake_force_N(weight >= 0 ? weight : sp.farfield_wake_force_weight, c.ice.diameter_mean_m,
+                                      c.ice.density_kg_m3, c.water.gravity_m_s2);
+  const double speed = j.value("cull_wake_speed_m_s", 0.0);
+  k.wake_speed_m_s = speed >= 0 ? speed : sp.farfield_wake_speed_m_s;
+  k.wake_by = sp.farfield_wake_by;
+  k.front_speed_m_s = sp.farfield_front_speed_m_s;
+  k.cull_geoms = j.value("cull_geoms", true);
+  return k;
+}
+
+bool same_far_field(const Skips& a, const Skips& b) {
+  return a.auto_disable == b.auto_disable && a.disable_linear_m_s == b.disable_linear_m_s &&
+         a.disable_angular_rad_s == b.disable_angular_rad_s && a.disable_steps == b.disable_steps &&
+         a.auto_disable_far_only == b.auto_disable_far_only && a.cull == b.cull && a.cull_ahead_m == b.cull_ahead_m &&
+         a.cull_behind_m == b.cull_behind_m && a.cull_side_m == b.cull_side_m && a.cull_every == b.cull_every &&
+         a.wake_force_N == b.wake_force_N && a.wake_speed_m_s == b.wake_speed_m_s && a.wake_by == b.wake_by &&
+         a.front_speed_m_s == b.front_speed_m_s && a.cull_geoms == b.cull_geoms;
+}
+
+std::string number_text(double x) { return fmt::format("{}", x); }
+
+// The case keys that give a run from before the ode: section the settings of its "ode_options".
+CaseOverrides case_keys_of(const nlohmann::json& j, const Case& c, const fs::path& meta_file) {
+  const auto refuse = [&](const std::string& why) {
+    throw InputError(fmt::format("{}: \"ode_options\": {}; the case keys cannot say that, so this brash-ode cannot "
+                                 "resume the run as it was set up: resume it with the brash-ode that started it, or "
+                                 "run its case again",
+                                 meta_file.string(), why));
+  };
+  if (!j.value("scene_from", std::string()).empty()) refuse("a bench-ode run from another run's scene");
+  if (j.at("max_contacts_per_pair").get<int>() != StepperSettings{}.max_contacts_per_pair)
+    refuse("max_contacts_per_pair is not " + std::to_string(StepperSettings{}.max_contacts_per_pair));
+  if (j.at("end_walls").get<bool>() && c.channel.ends != ChannelEnds::Walls)
+    refuse("end walls, and its case.yaml has channel.ends: open");
+  if (!j.at("auto_disable_far_only").get<bool>()) refuse("auto-disable everywhere (auto_disable_far_only false)");
+  const double dt_s = j.at("dt_s");
+  CaseOverrides set = {
+      {"ode.timestep_s", number_text(dt_s)},
+      {"ode.iterations", std::to_string(j.at("iterations").get<int>())},
+      {"ode.erp", number_text(j.at("erp"))},
+      {"ode.cfm", number_text(j.at("cfm"))},
+      {"ode.surface_layer_m", number_text(j.at("contact_surface_layer_m"))},
+      {"ode.angular_damping", number_text(j.at("angular_damping"))},
+      {"ode.implicit", j.at("implicit").get<std::string>()},
+      // runs before the switches existed used sap, the same contacts as grid, and the spatial order
+      {"ode.broad_phase", j.value("broad_phase", "grid")},
+      {"ode.sphere_order", j.value("sphere_order", "spatial")},
+      {"ode.idle_geoms_out", j.value("cull_geoms", true) ? "true" : "false"},
+      {"ode.auto_disable", j.at("auto_disable").get<bool>() ? "true" : "false"},
+      {"ode.auto_disable_linear_m_s", number_text(j.at("disable_linear_m_s"))},
+      {"ode.auto_disable_angular_rad_s", number_text(j.at("disable_angular_rad_s"))},
+      {"ode.auto_disable_steps", std::to_string(j.at("disable_steps").get<int>())},
+      {"ode.settle_s", number_text(j.at("settle_s"))},
+      {"ode.settle_damping", number_text(j.value("settle_damping", 0.0))}};
+  const Skips before = far_field_before_case_keys(j, c);
+  if (!before.cull && !before.auto_disable) return set;  // the far field's keys act on nothing
+  // the window, the wake and the membership period that run had, as the case's far field
+  if (before.cull) set.emplace_back("speedups.farfield", "true");
+  set.emplace_back("speedups.farfield_ahead_m", number_text(before.cull_ahead_m));
+  set.emplace_back("speedups.farfield_behind_m", number_text(before.cull_behind_m));
+  set.emplace_back("speedups.farfield_beside_m",
+                   before.cull_side_m < Skips{}.cull_side_m ? number_text(before.cull_side_m) : "~");
+  const double weight = j.value("cull_wake_force_weight", 0.0);
+  if (weight >= 0) set.emplace_back("speedups.farfield_wake_force_weight", number_text(weight));
+  set.emplace_back("speedups.farfield_wake_speed_m_s", number_text(before.wake_speed_m_s));
+  if (!c.speedups.farfield)
+    set.emplace_back("speedups.farfield_every_steps",
+                     std::to_string(std::max(1L, std::lround(before.cull_every * dt_s / c.run.timestep_s))));
+  return set;
+}
+
+}  // namespace
+
+double restart_every_of_run(const fs::path& run_dir) {
+  const auto meta = nlohmann::json::parse(read_text(run_dir / "meta.json"), nullptr, false);
+  if (!meta.is_object()) return -1;
+  const nlohmann::json& from = meta.contains("ode_options") ? meta["ode_options"] : meta;
+  const auto it = from.find("restart_every_s");
+  return it != from.end() && it->is_number() ? it->get<double>() : -1;
+}
+
+bool move_ode_options_into_case(const fs::path& run_dir) {
+  const fs::path meta_file = run_dir / "meta.json", case_file = run_dir / "case.yaml";
+  auto meta = nlohmann::json::parse(read_text(meta_file), nullptr, false);
+  if (!meta.is_object() || !meta.contains("ode_options")) return false;
+  run::RunDirLock lock(run_dir);  // not under a run still going
+  const Case c = load_case(case_file);
+  CaseOverrides set;
   try {
-    meta = nlohmann::json::parse(read_text(mf));
-  } catch (const std::exception& e) {
-    throw InputError(fmt::format("{}: unreadable: {}", mf.string(), e.what()));
-  }
-  if (meta.value("engine", "") != "ode" || !meta.contains("ode_options"))
-    throw InputError(fmt::format("{}: not a brash-ode run with restart support (no \"ode_options\")", mf.string()));
-  const auto& j = meta["ode_options"];
-  RunOptions o;
-  try {
-    o.case_dir = j.at("case_dir").get<std::string>();
-    o.duration_s = j.at("duration_s");
-    o.model = j.at("model");
-    o.treatment = j.at("treatment");
-    o.stepper.dt_s = j.at("dt_s");
-    o.stepper.iterations = j.at("iterations");
-    o.stepper.erp = j.at("erp");
-    o.stepper.cfm = j.at("cfm");
-    o.stepper.contact_surface_layer = j.at("contact_surface_layer_m");
-    o.stepper.max_contacts_per_pair = j.at("max_contacts_per_pair");
-    o.stepper.angular_damping = j.at("angular_damping");
-    // Runs before the switch existed used sap; grid gives the same contacts (see world.hpp), so they go on with it.
-    o.stepper.broad_phase = j.value("broad_phase", to_string(BroadPhase::Grid)) == to_string(BroadPhase::Sap) ? BroadPhase::Sap : BroadPhase::Grid;
-    // runs before the switch existed were all in the spatial order
-    o.sphere_order =
-        j.value("sphere_order", "spatial") == "packing" ? SphereOrder::Packing : SphereOrder::Spatial;
-    o.skips.auto_disable = j.at("auto_disable");
-    o.skips.disable_linear_m_s = j.at("disable_linear_m_s");
-    o.skips.disable_angular_rad_s = j.at("disable_angular_rad_s");
-    o.skips.disable_steps = j.at("disable_steps");
-    o.skips.auto_disable_far_only = j.at("auto_disable_far_only");
-    o.skips.cull = j.at("cull");
-    o.cull_ahead_m = j.at("cull_ahead_m");  // (runs before the case's far field on ODE: the values they ran with)
-    o.cull_behind_m = j.at("cull_behind_m");
-    o.cull_side_m = j.at("cull_side_m");
-    o.skips.cull_every = j.at("cull_every");
-    o.skips.cull_geoms = j.value("cull_geoms", true);  // runs before the switch existed: same contacts either way
-    o.cull_wake_force_weight = j.value("cull_wake_force_weight", 0.0);  // runs before the wake: the window alone
-    o.cull_wake_speed_m_s = j.value("cull_wake_speed_m_s", 0.0);
-    o.implicit_mode = j.at("implicit") == "scale_forces" ? ImplicitMode::ScaleForces : ImplicitMode::EffectiveMass;
-    o.end_walls = j.at("end_walls");
-    o.settle_s = j.at("settle_s");
-    o.settle_damping = j.value("settle_damping", 0.0);  // runs before the option: undamped
-    o.overlap_tolerance_over_d = j.at("overlap_tolerance_over_d");
-    o.restart_every_s = j.at("restart_every_s");
-    o.scene_from = j.value("scene_from", std::string());  // runs before the option: from their packing
-    o.scene_time_s = j.value("scene_time_s", 0.0);
+    set = case_keys_of(meta["ode_options"], c, meta_file);
   } catch (const nlohmann::json::exception& e) {
-    throw InputError(fmt::format("{}: ode_options: {}", mf.string(), e.what()));
+    throw InputError(fmt::format("{}: \"ode_options\": {}", meta_file.string(), e.what()));
   }
-  o.out_dir = run_dir;
-  o.progress = cli.progress;
-  o.crash_after_step = cli.crash_after_step;
-  o.stop_after_step = cli.stop_after_step;
-  return o;
+  Case moved;
+  try {
+    moved = parse_case(derive_case(case_file, set), run_dir, case_file.string());
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}: its \"ode_options\" as case keys: {}", meta_file.string(), e.what()));
+  }
+  if (!same_far_field(far_field_skips(moved), far_field_before_case_keys(meta["ode_options"], c)))
+    throw InputError(fmt::format("{}: \"ode_options\": a far field the case keys cannot give to the step (its "
+                                 "membership period or window); resume it with the brash-ode that started it, or run "
+                                 "its case again",
+                                 meta_file.string()));
+  run::write_atomic(case_file, dump_case_yaml(moved));
+  meta.erase("ode_options");
+  run::write_meta(run_dir, meta);
+  return true;
 }
 
 }  // namespace brash::ode

@@ -20,15 +20,20 @@ struct Column {  // one started paper-case run
   const brash::Case* c = nullptr;
   const json* meta = nullptr;
   bool ode() const { return meta->value("engine", std::string()) == "ode"; }
+  // brash-ode's settings in meta.json, of runs from before the case's ode: section (later: the case's)
   json ode_options() const { return meta->value("ode_options", json::object()); }
+  bool old_ode() const { return ode() && meta->contains("ode_options"); }
 };
 
 std::string our_contacts(const Column& col) {
-  if (col.ode()) {
+  if (col.old_ode()) {
     const json o = col.ode_options();
     return fmt::format("ODE rigid, contact joints (ERP {}, CFM {}, {} iterations)", o.value("erp", NAN),
                        o.value("cfm", NAN), o.value("iterations", 0));
   }
+  if (col.ode())
+    return fmt::format("ODE rigid, contact joints (ERP {}, CFM {}, {} iterations)", col.c->ode.erp, col.c->ode.cfm,
+                       col.c->ode.iterations);
   const auto& contact = col.c->contact;
   return fmt::format("Hertz-Mindlin, E = {:.4g} Pa, ν = {}, e = {}", contact.youngs_modulus_pa, contact.poisson_ratio,
                      contact.restitution);
@@ -48,7 +53,7 @@ std::string our_ice(const Column& col) {
 }
 
 std::string our_far_field(const Column& col) {
-  if (col.ode()) return col.ode_options().value("cull", false) ? "culled (window alone: biased high)" : "every piece integrated";
+  if (col.old_ode()) return col.ode_options().value("cull", false) ? "culled (window alone: biased high)" : "every piece integrated";
   const std::string window = col.c->speedups.moving_window ? "; moving window" : "";
   if (!col.c->speedups.farfield) return (window.empty() ? "every piece integrated" : "every piece in the window integrated") + window;
   if (farfield_window_alone(col.c->speedups)) return "far field, window alone (biased high)" + window;
@@ -62,7 +67,7 @@ std::string our_far_field(const Column& col) {
 std::string our_channel(const Column& col) {
   // the case's channel.ends; older ODE runs recorded brash-ode's --end-walls in their options instead
   const bool walls = col.c->channel.ends == ChannelEnds::Walls ||
-                     (col.ode() && col.ode_options().value("end_walls", false));
+                     (col.old_ode() && col.ode_options().value("end_walls", false));
   return fmt::format("{:g} x {:g} m, side walls, ends {}", col.c->channel.length_m, col.c->channel.width_m,
                      walls ? "walled (x = 0 and x = length)" : "open");
 }

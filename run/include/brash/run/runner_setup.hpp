@@ -4,6 +4,8 @@
 #pragma once
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "brash/case.hpp"
 
@@ -13,7 +15,8 @@ struct CaseOverrides {
   std::string model;        // fluid.model, empty = keep
   std::string treatment;    // fluid.treatment, empty = keep
   double duration_s = -1;   // run.duration_s, <= 0 = keep; the window is pulled inside a shorter run
-  std::string channel_ends;  // channel.ends, empty = keep
+  // any other case keys, {dotted key, YAML value} as `brash-case derive --set KEY=VALUE` (--set, brash-ode's --dt)
+  std::vector<std::pair<std::string, std::string>> sets;
 };
 
 // `tag` prefixes the notes printed on stderr (e.g. "[brash-liggghts]").

@@ -1,7 +1,8 @@
 // brash-ode's case runner: the ODE adapter of the run driver (brash/run/engine.hpp). Case -> ODE scene (packing
 // spheres, kinematic hull trimesh, side walls) advanced in this process; restart/restart_<step>.bin every
 // restart_every_s (the last two kept; restart.hpp), and one at the very step a stop signal arrives, so that
-// `brash-ode --resume RUN_DIR` continues a killed or stopped run. The driver writes the rest of the run layout.
+// `brash-ode --resume RUN_DIR` continues a killed or stopped run as its case.yaml says. The driver writes the rest
+// of the run layout.
 #pragma once
 #include <filesystem>
 #include <memory>
@@ -13,51 +14,45 @@
 
 namespace brash::ode {
 
-// The order in which the packing's spheres become ODE bodies: spatial (cells of two mean diameters, the
-// default: bodies and contact rows sit in memory as in space) or the packing file's (random in space; kept to
-// measure the difference).
-enum class SphereOrder { Spatial, Packing };
-inline const char* to_string(SphereOrder o) { return o == SphereOrder::Packing ? "packing" : "spatial"; }
-
+// What a run takes besides its case (the case's ode: section and speedups.farfield_* set the engine: see
+// settings below): how often it writes restart files, its own progress lines, and testing hooks.
 struct RunOptions {
-  std::filesystem::path case_dir;      // folder with case.yaml (or the case.yaml itself)
-  std::filesystem::path out_dir;       // run directory; empty = <runs_root>/<case>-ode-<model>-<stamp>
-  std::filesystem::path runs_root = "runs";
-  double duration_s = 0;               // 0 = the case's run.duration_s
-  std::string model, treatment;        // overrides of fluid.model / fluid.treatment ("" = case)
-  StepperSettings stepper;             // dt default 5e-4 (the case's run.timestep_s is the DEM step)
-  Skips skips;
-  // --cull's wake rule in the case file's terms, negative = the case's speedups.farfield_wake_force_weight /
-  // farfield_wake_speed_m_s (as brash-liggghts-run gives fix brash/farfield); the run sets skips' wake from them.
-  double cull_wake_force_weight = -1;
-  double cull_wake_speed_m_s = -1;
-  // --cull-ahead/--cull-behind/--cull-side, negative = the case's speedups.farfield_ahead_m / farfield_behind_m /
-  // farfield_beside_m when the case has speedups.farfield: true, else Skips' defaults (the window of cull_skips)
-  double cull_ahead_m = -1, cull_behind_m = -1, cull_side_m = -1;
-  ImplicitMode implicit_mode = ImplicitMode::EffectiveMass;
-  SphereOrder sphere_order = SphereOrder::Spatial;
-  bool end_walls = false;              // --end-walls: the case with channel.ends: walls
-  double settle_s = 0;                 // simulated settling with the hull parked at start_x (not in t)
-  double settle_damping = 0;           // ODE velocity damping per step over the settling's first half
-  bool progress = true;                // the engine's own lines on stderr (the driver prints progress)
-  double overlap_tolerance_over_d = 1e-4;  // packing overlaps beyond this fraction of d_mean are errors
   double restart_every_s = 0.1;        // simulated time between restart files (0 = none)
+  bool progress = true;                // the engine's own lines on stderr (the driver prints progress)
   // bench-ode --scene-from: the pieces of another run's particle dump (id,x,y,z,radius,vx,vy,vz: any engine's
   // particles/ file) instead of the packing, and the hull where it was scene_time_s into that run, to time the
-  // ODE step on a run's late scene (pieces numbered in the file's order; not for a resistance)
+  // ODE step on a run's late scene (pieces numbered in the file's order; not for a resistance; not resumable)
   std::filesystem::path scene_from;
   double scene_time_s = 0;
   long stop_after_step = -1;           // testing: raise SIGTERM during this step (a stop request, handled)
   long crash_after_step = -1;          // testing: std::_Exit(137) right after this step (a kill -9: no cleanup)
 };
 
-// The options a run was set up with, from RUN_DIR/meta.json ("ode_options"), for --resume: every option but
-// progress, crash_after_step and stop_after_step (those of `cli`). Throws InputError.
-RunOptions options_from_meta(const std::filesystem::path& run_dir, const RunOptions& cli);
+// The engine's settings from the case, each computed in this one place: the stepper of the ode: section, the
+// implicit realisation, and the far field (speedups.farfield_*: the window, the membership period of
+// farfield_every_steps DEM steps in ODE steps, the wake rule in SI units; brash/core/far_field.hpp) with ODE's
+// auto-disable (ode.auto_disable*, which keeps the pieces inside that window awake).
+StepperSettings stepper_settings(const Case& c);
+ImplicitMode implicit_mode(const Case& c);
+Skips far_field_skips(const Case& c);
+
+// A run directory of brash-ode from before the ode: case keys keeps its settings in meta.json ("ode_options"), not
+// in its case.yaml. Before such a run is resumed they move into its case.yaml as the case keys that give the same
+// run (the ode: section; a far field set on the command line as speedups.farfield_*), and "ode_options" leaves
+// meta.json; true when they did. Settings the keys cannot give are an InputError naming meta.json, the run
+// directory left as it was.
+bool move_ode_options_into_case(const std::filesystem::path& run_dir);
+
+// The interval between restart files a run directory was started with (meta.json "restart_every_s", or its
+// "ode_options"), -1 when it names none: a resume keeps it unless given another, so that it writes its restart
+// files, and normalises its quaternions there (World::reset_orientations), at the same steps as the uninterrupted
+// run, which it then reproduces bit for bit.
+double restart_every_of_run(const std::filesystem::path& run_dir);
 
 // What the last attempt did (bench-ode's numbers).
 struct RunSummary {
   long steps = 0;                      // last step done
+  double dt_s = 0;                     // the ODE step (ode.timestep_s)
   double simulated_s = 0;              // its model time
   double loop_time_s = 0;              // wall time of the stepping loop
   long particle_steps = 0;             // of the loop
@@ -74,7 +69,7 @@ class OdeEngine final : public run::Engine {
   nlohmann::json meta() const override;
   // The settled bed with a contact surface layer as deep as its largest overlap (load()).
   bool starts_from_settled_bed() const override { return true; }
-  // speedups.farfield: the far-field rule as --cull, with the case's window, period and wake (cull_skips).
+  // speedups.farfield: the far-field rule with the case's window, period and wake (far_field_skips).
   bool idles_far_field() const override { return true; }
   WakeRefusal wake_refusal(WakeBy by) const override;
   void load(const Case& c, const std::filesystem::path& case_file, const std::vector<Sphere>& spheres) override;
