@@ -404,7 +404,8 @@ const KeySpec kSpeedups[] = {
         "the window; LIGGGHTS and ODE); 0 = off"),
     flag<&Case::speedups, &SpeedupSpec::early_stop_trend_check>(
         "early_stop_trend_check",
-        "... and only when the window's two halves agree (no trend); false = on the CI alone"),
+        "... and only when the record shows no drift: the window's fitted slope within its 95 % CI (the full "
+        "window's mean is then estimated along it); false = on the CI alone"),
 };
 
 const KeySpec kGuards[] = {

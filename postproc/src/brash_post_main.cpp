@@ -51,40 +51,96 @@ bool step(RunAnalysis& a, std::vector<std::string>& outputs, const char* what, F
   }
 }
 
-// Replays the early-stop rule on a finished run's record (early_stop.hpp) for each threshold and prints a markdown
-// table: where the run would have stopped, the model time that saves, and the window mean it would have reported
-// against the full window's. Exact for a LIGGGHTS run: an early stop only truncates the same trajectory.
-int run_early_stop(const fs::path& run_dir, const std::vector<double>& thresholds, double check_every_s,
-                   bool trend_check) {
-  const auto a = analyze_run(run_dir);
-  const double t0 = a.window.requested_s[0], t1 = a.window.requested_s[1];
-  if (a.window.truncated || a.window.fallback || a.force.t_s.empty())
-    throw brash::InputError(fmt::format("{}: the hull force record ends at t = {} s, before the window [{}, {}] s ends; "
-                                        "the replay needs a finished run",
-                                        run_dir.string(), a.force.t_s.empty() ? 0.0 : a.force.t_s.back(), t0, t1));
-  const double t_end = a.force.t_s.back();
-  const double every = check_every_s > 0 ? check_every_s : t_end / 200.0;
-  std::vector<double> r(a.force.fx_N.size());
-  for (std::size_t i = 0; i < r.size(); ++i) r[i] = -a.force.fx_N[i];
-  const auto& full = a.resistance;
-  fmt::print("early-stop replay of {}: window [{}, {}] s, record to {} s, a check every {:.4g} s{}\n"
-             "full window: {:.4g} +- {:.3g} N (95 % CI, {:.1f} %{})\n\n",
-             run_dir.string(), t0, t1, t_end, every, trend_check ? "" : ", CI alone (no trend check)", full.mean, full.ci95, 100 * full.ci95 / std::abs(full.mean),
-             full.plateau_found ? "" : ", no blocking plateau: a lower bound");
-  fmt::print("| early_stop_rel_ci | stops at t [s] | model time saved | mean at the stop [N] | vs full window | "
-             "difference / full CI95 |\n|---|---|---|---|---|---|\n");
-  for (const double rel : thresholds) {
-    if (!(rel > 0)) throw brash::InputError(fmt::format("--rel-ci {}: must be > 0", rel));
-    const auto e = brash::stats::replay_early_stop(a.force.t_s, r, t0, t1, rel, every, trend_check);
-    const double d = e.at_stop.mean - full.mean;
-    if (!e.stopped)
-      fmt::print("| {:.3g} | never (CI95 at the window end {:.1f} %) | 0 % | — | — | — |\n", rel,
-                 100 * full.ci95 / std::abs(full.mean));
-    else
-      fmt::print("| {:.3g} | {:.3f} | {:.1f} % ({:.2f}x) | {:.4g} +- {:.3g} | {:+.2f} % | {:+.2f} |\n", rel, e.t_stop_s,
-                 100 * (t_end - e.t_stop_s) / t_end, t_end / e.t_stop_s, e.at_stop.mean, e.at_stop.ci95,
-                 100 * d / full.mean, full.ci95 > 0 ? d / full.ci95 : 0.0);
+// Replays the early-stop rule on finished runs' records (early_stop.hpp) for each threshold and trend test and
+// prints one markdown table: where each run would have stopped, the model time that saves, the window mean at the
+// stop and the rule's estimate of the full window's mean against the full window's, and why the rule held or did
+// not. Exact for a LIGGGHTS run: an early stop only truncates the same trajectory. A run that was stopped early is
+// replayed on the window it asked for (meta.json early_stop.requested_window_s; before that was recorded, the window
+// to early_stop.requested_duration_s) up to its record's end, with the runner's checks (every 1/200 of the duration
+// asked for). The lag-1 autocorrelation and sd of each record's window (about its fitted line) are printed below
+// the table: the surrogate records of tests/stats/test_early_stop.cpp are matched to them.
+int run_early_stop(const std::vector<fs::path>& run_dirs, const std::vector<double>& thresholds,
+                   const std::vector<std::string>& trends, double check_every_s) {
+  std::vector<brash::stats::EarlyStopTrend> rules;
+  for (const auto& name : trends) {
+    try {
+      rules.push_back(brash::stats::early_stop_trend_from_string(name));
+    } catch (const std::invalid_argument& e) {
+      throw brash::InputError(fmt::format("--trend: {}", e.what()));
+    }
   }
+  for (const double rel : thresholds)
+    if (!(rel > 0)) throw brash::InputError(fmt::format("--rel-ci {}: must be > 0", rel));
+  std::string notes;
+  fmt::print("| run | window [s] | record to [s] | full window [N] | early_stop_rel_ci | trend test | stops at t [s] | "
+             "model time saved | window mean at the stop | its estimate of the full window | why (at the stop or "
+             "the last check) |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const auto& run_dir : run_dirs) {
+    const auto a = analyze_run(run_dir);
+    double t0 = a.window.requested_s[0], t1 = a.window.requested_s[1];
+    double duration = a.force.t_s.empty() ? 0.0 : a.force.t_s.back();
+    if (const auto& e = a.meta.early_stop) {
+      t1 = e->requested_window_end_s.value_or(e->requested_duration_s);
+      duration = e->requested_duration_s;
+    }
+    const double t_end = a.force.t_s.empty() ? 0.0 : a.force.t_s.back();
+    const bool whole = !a.force.t_s.empty() && t_end >= t1 - 1e-9;
+    if (a.force.t_s.empty() || (!a.meta.early_stop && (a.window.truncated || a.window.fallback)))
+      throw brash::InputError(fmt::format("{}: the hull force record ends at t = {} s, before the window [{}, {}] s ends; "
+                                          "the replay needs a finished run",
+                                          run_dir.string(), t_end, t0, t1));
+    const double every = check_every_s > 0 ? check_every_s : duration / 200.0;
+    std::vector<double> r(a.force.fx_N.size());
+    for (std::size_t i = 0; i < r.size(); ++i) r[i] = -a.force.fx_N[i];
+    const auto& full = a.resistance;
+    const std::string full_text =
+        whole ? fmt::format("{:.4g} +- {:.3g}{}", full.mean, full.ci95, full.plateau_found ? "" : " (lower bound)")
+              : "— (record ends first)";
+    const auto vs_full = [&](double x) {
+      return whole ? fmt::format(" ({:+.2f} %, {:+.2f} CI)", 100 * (x - full.mean) / full.mean,
+                                 full.ci95 > 0 ? (x - full.mean) / full.ci95 : 0.0)
+                   : std::string();
+    };
+    for (const double rel : thresholds)
+      for (const auto rule : rules) {
+        const auto e = brash::stats::replay_early_stop(a.force.t_s, r, t0, t1, rel, every, rule);
+        const std::string stop =
+            e.stopped ? fmt::format("{:.3f}", e.t_stop_s)
+                      : (whole ? std::string("never") : fmt::format("not by {:.3f}", e.t_stop_s));
+        const std::string saved =
+            e.stopped ? fmt::format("{:.1f} % ({:.2f}x)", 100 * (duration - e.t_stop_s) / duration, duration / e.t_stop_s)
+                      : "0 %";
+        fmt::print("| {} | [{}, {}] | {:.3f} | {} | {:.3g} | {} | {} | {} | {} | {} | {} |\n",
+                   run_dir.filename().string(), t0, t1, t_end, full_text, rel, to_string(rule), stop, saved,
+                   e.stopped ? fmt::format("{:.4g} +- {:.3g}{}", e.at_stop.mean, e.at_stop.ci95, vs_full(e.at_stop.mean))
+                             : std::string("—"),
+                   e.stopped ? fmt::format("{:.4g} +- {:.3g}{}", e.estimate, e.estimate_ci95, vs_full(e.estimate))
+                             : std::string("—"),
+                   e.last.checked ? e.last.explain() : std::string("no check"));
+      }
+    // the record's window about its fitted line: what the surrogate records are matched to
+    std::vector<double> w;
+    for (std::size_t i = 0; i < r.size(); ++i)
+      if (a.force.t_s[i] >= t0 - 1e-9 && a.force.t_s[i] <= t1 + 1e-9) w.push_back(r[i]);
+    if (w.size() >= 3) {
+      const double n = static_cast<double>(w.size()), im = 0.5 * (n - 1);
+      double m = 0, sir = 0;
+      for (const double x : w) m += x / n;
+      for (std::size_t i = 0; i < w.size(); ++i) sir += (static_cast<double>(i) - im) * (w[i] - m);
+      const double b = sir / (n * (n * n - 1) / 12);
+      double c0 = 0, c1 = 0;
+      for (std::size_t i = 0; i < w.size(); ++i) {
+        const double d = w[i] - m - b * (static_cast<double>(i) - im);
+        const double dp = i > 0 ? w[i - 1] - m - b * (static_cast<double>(i) - 1 - im) : 0.0;
+        c0 += d * d, c1 += i > 0 ? d * dp : 0.0;
+      }
+      notes += fmt::format("- {}: window [{}, {:.3f}] s, {} samples: mean {:.4g} N, sd {:.3g} N about the fitted line, "
+                           "lag-1 autocorrelation {:.2f}, drift {:+.2f} % over these samples\n",
+                           run_dir.filename().string(), t0, std::min(t1, t_end), w.size(), m, std::sqrt(c0 / n),
+                           c0 > 0 ? c1 / c0 : 0.0, 100 * b * (n - 1) / m);
+    }
+  }
+  fmt::print("\nThe records' windows (AR(1) matching of the surrogates):\n\n{}", notes);
   return 0;
 }
 
@@ -306,19 +362,28 @@ int main(int argc, char** argv) {
 
   auto* early = app.add_subcommand(
       "early-stop",
-      "replay the early-stop rule (speedups.early_stop_rel_ci) on a finished run: where it would have stopped, the "
-      "model time saved and the window mean it would have reported");
-  fs::path early_run;
+      "replay the early-stop rule (speedups.early_stop_rel_ci) on finished runs: where it would have stopped, the "
+      "model time saved, the window mean and the estimate of the full window's it would have reported, and why");
+  std::vector<fs::path> early_runs;
   std::vector<double> early_rel{0.02, 0.05, 0.1, 0.2};
   double early_every = 0;
-  early->add_option("RUN_DIR", early_run, "finished run directory")->required()->check(CLI::ExistingDirectory);
+  early->add_option("RUN_DIR", early_runs, "finished run directories (a run stopped early is replayed to its record's end)")
+      ->required()
+      ->check(CLI::ExistingDirectory);
   early->add_option("--rel-ci", early_rel, "thresholds: 95 % CI as a fraction of the mean")
       ->delimiter(',')
       ->capture_default_str();
+  std::vector<std::string> early_trend{"slope"};
+  early->add_option("--trend", early_trend,
+                    "trend tests: slope (the runners' rule), halves (the rule before the slope test), none (the CI "
+                    "alone)")
+      ->delimiter(',')
+      ->capture_default_str();
   bool early_no_trend = false;
-  early->add_flag("--no-trend-check", early_no_trend, "the rule on the CI alone (speedups.early_stop_trend_check: false)");
+  early->add_flag("--no-trend-check", early_no_trend, "the rule on the CI alone (--trend none; "
+                                                      "speedups.early_stop_trend_check: false)");
   early->add_option("--check-every", early_every,
-                    "model time between checks [s] (default: the LIGGGHTS runner's, 1/200 of the record)");
+                    "model time between checks [s] (default: the runners', 1/200 of the duration asked for)");
 
   auto* ensemble = app.add_subcommand(
       "paired-ensemble",
@@ -379,7 +444,9 @@ int main(int argc, char** argv) {
   try {
     if (fsicr->parsed()) return run_fsicr(p, ice_class);
     if (compare->parsed()) return run_compare(compare_runs, compare_out);
-    if (early->parsed()) return run_early_stop(early_run, early_rel, early_every, !early_no_trend);
+    if (early->parsed())
+      return run_early_stop(early_runs, early_rel, early_no_trend ? std::vector<std::string>{"none"} : early_trend,
+                            early_every);
     if (difference->parsed()) return run_difference(diff_ref, diff_run);
     if (sample->parsed()) return run_sample_stats(sample_source);
     if (ensemble->parsed()) {

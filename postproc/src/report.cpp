@@ -403,10 +403,19 @@ nlohmann::ordered_json report_json(const RunAnalysis& a) {
   j["wall_time_s"] = opt(a.meta.wall_time_s);
   j["particle_steps"] = opt(a.meta.particle_steps);
   j["exits"] = a.meta.exits;  // pieces that left through the channel's open ends (removed from the scene)
-  if (const auto& e = a.meta.early_stop)
+  if (const auto& e = a.meta.early_stop) {
     j["early_stop"] = {{"t_s", e->t_s},
                        {"requested_duration_s", e->requested_duration_s},
                        {"rel_ci_threshold", e->rel_ci_threshold}};
+    if (!e->reason.empty()) j["early_stop"]["reason"] = e->reason;
+    if (e->estimate_N && e->estimate_ci95_N) {
+      // the full window's mean as the rule estimated it at the stop (the drift extrapolated, its CI counted)
+      j["early_stop"]["full_window_estimate_N"] = *e->estimate_N;
+      j["early_stop"]["full_window_estimate_ci95_N"] = *e->estimate_ci95_N;
+    }
+  }
+  if (const auto& e = a.meta.early_stop_last_check)
+    j["early_stop_last_check"] = {{"t_s", e->t_s}, {"reason", e->reason}};
   j["reference"] = reference_json(a);  // null: the case declares no published values
   if (a.band)
     j["contact_band"] = {{"band_below_m", a.band->band_below_m},
@@ -442,6 +451,17 @@ std::string report_markdown(const RunAnalysis& a) {
         "| early stop | at t = {:.3f} s of the {} s asked for: the window mean's 95 % CI had fallen below "
         "{} % of it (speedups.early_stop_rel_ci); the window ends there |\n",
         e->t_s, e->requested_duration_s, 100 * e->rel_ci_threshold);
+  if (const auto& e = a.meta.early_stop; e && !e->reason.empty())
+    md += fmt::format("| early stop: why | {}{} |\n", e->reason,
+                      e->estimate_N && e->estimate_ci95_N
+                          ? fmt::format("; the full window{} estimated {:.4g} +- {:.3g} N (drift extrapolated)",
+                                        e->requested_window_end_s
+                                            ? fmt::format(" (to {} s)", *e->requested_window_end_s)
+                                            : std::string(),
+                                        *e->estimate_N, *e->estimate_ci95_N)
+                          : std::string());
+  if (const auto& e = a.meta.early_stop_last_check)
+    md += fmt::format("| early stop | did not hold; at its last check (t = {:.3f} s): {} |\n", e->t_s, e->reason);
   md += fmt::format(
       "| wall time | {} |\n| particle steps | {} |\n| pieces gone through the channel's ends | {} |\n\n",
       a.meta.wall_time_s ? fmt::format("{:.1f} s", *a.meta.wall_time_s) : "n/a",

@@ -62,7 +62,19 @@ RunMeta read_run_meta(const std::filesystem::path& path) {
     take(j["early_stop"], "t_s", e.t_s, path);
     take(j["early_stop"], "requested_duration_s", e.requested_duration_s, path);
     take(j["early_stop"], "rel_ci_threshold", e.rel_ci_threshold, path);
+    take(j["early_stop"], "reason", e.reason, path);
+    take(j["early_stop"], "estimate_N", e.estimate_N, path);
+    take(j["early_stop"], "estimate_ci95_N", e.estimate_ci95_N, path);
+    if (const auto w = j["early_stop"].value("requested_window_s", nlohmann::json());
+        w.is_array() && w.size() == 2 && w[1].is_number())
+      e.requested_window_end_s = w[1].get<double>();
     m.early_stop = e;
+  }
+  if (j.contains("early_stop_last_check") && j["early_stop_last_check"].is_object()) {
+    EarlyStopCheckMeta e;
+    take(j["early_stop_last_check"], "t_s", e.t_s, path);
+    take(j["early_stop_last_check"], "reason", e.reason, path);
+    m.early_stop_last_check = e;
   }
   return m;
 }

@@ -102,11 +102,12 @@ void record_early_stop(const Case& c, const fs::path& run_dir, const EarlyStopSt
   stopped.run.duration_s = early.t_s;
   stopped.run.window_s[1] = std::min(stopped.run.window_s[1], early.t_s);
   write_atomic(run_dir / "case.yaml", dump_case_yaml(stopped));
-  meta["early_stop"] = {{"t_s", early.t_s},
-                        {"requested_duration_s", c.run.duration_s},
-                        {"rel_ci_threshold", c.speedups.early_stop_rel_ci},
-                        {"mean_N", early.mean_N},
-                        {"ci95_N", early.ci95_N}};
+  auto e = to_json(early);
+  e["requested_duration_s"] = c.run.duration_s;
+  e["requested_window_s"] = {c.run.window_s[0], c.run.window_s[1]};
+  e["rel_ci_threshold"] = c.speedups.early_stop_rel_ci;
+  meta["early_stop"] = e;
+  meta.erase("early_stop_last_check");  // the stop is the last check
 }
 
 // status, reason and the exit status of a run whose last attempt ended.

@@ -105,12 +105,31 @@ bool RunMonitor::check_early_stop(double t_s) {
   for (const auto& row : engine_.force_record(run_dir_, t_s))
     if (row.t_s >= t0 - 1e-12) resistance.push_back(-row.fx_N);
   const auto v = stats::early_stop_verdict(resistance, t_s, t0, t1, rel_ci, case_.speedups.early_stop_trend_check);
+  if (!v.checked) return false;
+  early_ = {v.stop,       true,       t_s,     v.blocking.mean,       v.blocking.ci95,       v.estimate,
+            v.estimate_ci95, v.trend, v.trend_ci95, stats::to_string(v.trend_test), v.explain()};
+  // the last check is in meta.json (refreshed as the run goes): why the run goes on, or why it stopped
+  record_.meta()["early_stop_last_check"] = to_json(early_);
   if (!v.stop) return false;
-  early_ = {true, t_s, v.blocking.mean, v.blocking.ci95};
-  std::fprintf(stderr, "\n%s early stop at t = %.3f s: window mean %.4g N, 95 %% CI +-%.3g N (%.2f %% < %.2f %%)\n",
-               tag_.c_str(), t_s, v.blocking.mean, v.blocking.ci95, 100 * v.blocking.ci95 / std::abs(v.blocking.mean),
-               100 * rel_ci);
+  std::fprintf(stderr,
+               "\n%s early stop at t = %.3f s: %s; window mean %.4g N +- %.3g N, the full window's estimated "
+               "%.4g N +- %.3g N (95 %% CI)\n",
+               tag_.c_str(), t_s, early_.reason.c_str(), v.blocking.mean, v.blocking.ci95, v.estimate,
+               v.estimate_ci95);
   return true;
+}
+
+nlohmann::json to_json(const EarlyStopState& e) {
+  return {{"t_s", e.t_s},
+          {"stop", e.stopped},
+          {"reason", e.reason},
+          {"trend_test", e.trend_test},
+          {"mean_N", e.mean_N},
+          {"ci95_N", e.ci95_N},
+          {"estimate_N", e.estimate_N},
+          {"estimate_ci95_N", e.estimate_ci95_N},
+          {"drift_N", e.drift_N},
+          {"drift_ci95_N", e.drift_ci95_N}};
 }
 
 void RunMonitor::refresh(double t_s, double particle_steps) {

@@ -31,10 +31,18 @@ class RunRecord {
   std::chrono::steady_clock::time_point attempt_start_;
 };
 
+// The early stop's last check (brash/stats/early_stop.hpp): whether it stopped the run, and why it did or why the
+// run went on.
 struct EarlyStopState {
   bool stopped = false;
-  double t_s = 0, mean_N = 0, ci95_N = 0;
+  bool checked = false;                  // at least one check
+  double t_s = 0, mean_N = 0, ci95_N = 0;  // the check's time, the window mean so far and its CI95
+  double estimate_N = 0, estimate_ci95_N = 0;  // the full window's mean as the rule estimates it, with its CI95
+  double drift_N = 0, drift_ci95_N = 0;  // the fitted drift over the whole window and its CI95
+  std::string trend_test;                // slope | none
+  std::string reason;                    // e.g. "drift -1.20 %/window > CI 0.90 %"
 };
+nlohmann::json to_json(const EarlyStopState& e);  // the meta.json object of a stop or a last check
 
 class RunMonitor final : public Monitor {
  public:

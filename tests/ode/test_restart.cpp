@@ -382,6 +382,10 @@ TEST_F(Restart, EarlyStopEndsWhereTheRuleSays) {
   const std::string meta = slurp(kRoot / "es_run" / "meta.json");
   EXPECT_NE(meta.find("\"status\": \"complete\""), std::string::npos) << meta;
   EXPECT_NE(meta.find("\"early_stop\""), std::string::npos) << meta;
+  // why it stopped, in the rule's words, and its estimate of the full window's mean (early_stop.hpp)
+  EXPECT_NE(meta.find("\"reason\": \"" + replay.last.explain() + "\""), std::string::npos) << meta;
+  EXPECT_NE(meta.find("\"estimate_ci95_N\""), std::string::npos) << meta;
+  EXPECT_EQ(meta.find("\"early_stop_last_check\""), std::string::npos) << meta;  // the stop is the last check
   const auto stopped = read_csv(kRoot / "es_run" / "hull_force.csv");
   ASSERT_FALSE(stopped.empty());
   std::printf("[early stop] replay: stop at %.4f s; the run's record ends at %.4f s\n", replay.t_stop_s,
@@ -410,6 +414,24 @@ TEST_F(Restart, EarlyStopEndsWhereTheRuleSays) {
   EXPECT_NEAR(resumed.back()[0], replay.t_stop_s, 1e-9);
   for (std::size_t i = 0; i < resumed.size(); ++i)
     EXPECT_NEAR(resumed[i][1], stopped[i][1], 1e-6) << "row " << i;
+
+  // A threshold the record never meets: the run goes to its end and meta.json says why, with the verdict of its
+  // last check (0.199 s: the runner does not check at the run's last point) as the rule gives it on the record.
+  ASSERT_FALSE(brash::stats::replay_early_stop(t, r, 0.1, 0.2, 0.001, 0.2 / 200, true).stopped);
+  std::vector<double> since;
+  for (std::size_t i = 0; i < t.size(); ++i)
+    if (t[i] >= 0.1 - 1e-12 && t[i] <= 0.199 + 1e-9) since.push_back(r[i]);
+  const auto last = brash::stats::early_stop_verdict(since, 0.199, 0.1, 0.2, 0.001);
+  ASSERT_TRUE(last.checked);
+  yaml = slurp(cdir / "case.yaml");
+  yaml.replace(yaml.find("early_stop_rel_ci: 0.5"), 22, "early_stop_rel_ci: 0.001");
+  std::ofstream(cdir / "case.yaml") << yaml;
+  ASSERT_EQ(run(exe + (kRoot / "es_never").string() + "' > /dev/null 2>&1"), 0);
+  const std::string meta_never = slurp(kRoot / "es_never" / "meta.json");
+  EXPECT_EQ(meta_never.find("\"early_stop\""), std::string::npos) << meta_never;
+  EXPECT_NE(meta_never.find("\"early_stop_last_check\""), std::string::npos) << meta_never;
+  EXPECT_NE(meta_never.find("\"t_s\": 0.199"), std::string::npos) << meta_never;
+  EXPECT_NE(meta_never.find("\"reason\": \"" + last.explain() + "\""), std::string::npos) << meta_never;
 }
 
 TEST_F(Restart, NoUsableRestartFileIsAClearError) {

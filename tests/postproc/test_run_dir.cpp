@@ -291,7 +291,33 @@ TEST(RunDir, EarlyStoppedRunSaysWhereAndWhy) {
   const std::string text = brash::post::read_text_file(dir / "report.md");
   EXPECT_NE(text.find("| early stop | at t = 25.000 s of the 40 s asked for"), std::string::npos) << text;
   EXPECT_NE(text.find("below 1 % of it"), std::string::npos) << text;
-  // a run without the key has neither
+  // a meta.json from before the slope test has no reason: no row for it
+  EXPECT_EQ(text.find("early stop: why"), std::string::npos) << text;
+  // since the slope test: the rule's reason and its estimate of the full window's mean
+  r.meta_extra_json = R"(, "early_stop": {"t_s": 25.0, "requested_duration_s": 40.0, "rel_ci_threshold": 0.01,
+ "requested_window_s": [15.0, 40.0], "mean_N": 2.0, "ci95_N": 0.01, "estimate_N": 1.98, "estimate_ci95_N": 0.03,
+ "reason": "CI 0.50 % < 1.00 %, drift -1.00 %/window within its CI 2.50 %"})";
+  write_synthetic_run(dir, r);
+  const auto j3 = run_cli(dir);
+  EXPECT_DOUBLE_EQ(j3["early_stop"]["full_window_estimate_N"].get<double>(), 1.98);
+  EXPECT_DOUBLE_EQ(j3["early_stop"]["full_window_estimate_ci95_N"].get<double>(), 0.03);
+  EXPECT_NE(j3["early_stop"]["reason"].get<std::string>().find("drift -1.00 %/window"), std::string::npos);
+  const std::string text3 = brash::post::read_text_file(dir / "report.md");
+  EXPECT_NE(text3.find("| early stop: why | CI 0.50 % < 1.00 %, drift -1.00 %/window within its CI 2.50 %; the full "
+                       "window (to 40 s) estimated 1.98 +- 0.03 N (drift extrapolated) |"),
+            std::string::npos)
+      << text3;
+  // a run with the early stop on that went on: its last check says why
+  r.meta_extra_json = R"(, "early_stop_last_check": {"t_s": 39.8, "stop": false,
+ "reason": "drift -1.20 %/window > CI 0.90 %"})";
+  write_synthetic_run(dir, r);
+  const auto j4 = run_cli(dir);
+  EXPECT_FALSE(j4.contains("early_stop"));
+  EXPECT_EQ(j4["early_stop_last_check"]["reason"].get<std::string>(), "drift -1.20 %/window > CI 0.90 %");
+  EXPECT_NE(brash::post::read_text_file(dir / "report.md")
+                .find("| early stop | did not hold; at its last check (t = 39.800 s): drift -1.20 %/window > CI 0.90 % |"),
+            std::string::npos);
+  // a run without the keys has neither
   SyntheticRun plain;
   write_synthetic_run(dir, plain);
   const auto j2 = run_cli(dir);
@@ -501,20 +527,30 @@ TEST(RunDir, ImpossibleMeasuredHullGivesNoFsicrResult) {
 }
 
 // `brash-post early-stop`: the rule replayed on a finished synthetic run (plateau from 10 s, window [15, 40] s,
-// checks every 45 / 200 s): at 5 % it stops soon after 40 % of the window (25 s; the first check, 25.2 s, has
-// no blocking plateau yet), with the mean 1 % (0.55 CI) from the full window's; at 0.1 % never.
+// checks every 45 / 200 s). At 5 % the slope rule stops at the first check (25.2 s): the window mean is 1.4 %
+// (0.71 CI) from the full window's, and the estimate of the full window, extrapolated along a drift of +15 %
+// +- 24 %/window (no drift is there: AR(1) noise with phi 0.8), is +5.9 % off and inside its own CI (+- 7.7 %);
+// the rule before (halves) stops at 25.425 s, 1 % (0.55 CI) off; at 0.1 % never, with the reason.
 // A run whose record ends before the window end is refused.
 TEST(RunDir, EarlyStopReplayTable) {
   const auto dir = scratch("early");
   SyntheticRun r;
   write_synthetic_run(dir, r);
   const auto out = dir / "early.txt";
-  const auto cmd = fmt::format("{} early-stop {} --rel-ci 0.05,0.001 > {} 2>&1", BRASH_POST_EXE, dir.string(), out.string());
+  const auto cmd = fmt::format("{} early-stop {} --rel-ci 0.05,0.001 --trend slope,halves > {} 2>&1", BRASH_POST_EXE,
+                               dir.string(), out.string());
   ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
   const std::string text = brash::post::read_text_file(out);
-  EXPECT_NE(text.find("| 0.05 | 25.425 | 43.5 % (1.77x) | 2.031 +- 0.0587 | +1.05 % | +0.55 |"), std::string::npos)
+  EXPECT_NE(text.find("| 0.05 | slope | 25.200 | 44.0 % (1.79x) | 2.037 +- 0.0584 (+1.36 %, +0.71 CI) | 2.127 +- "
+                      "0.156 (+5.85 %, +3.05 CI) | CI 2.87 % < 5.00 %, drift +14.97 %/window within its CI 24.07 %; "
+                      "the full window's mean +- 7.67 % |"),
+            std::string::npos)
       << text;
-  EXPECT_NE(text.find("| 0.001 | never"), std::string::npos) << text;
+  EXPECT_NE(text.find("| 0.05 | halves | 25.425 | 43.5 % (1.77x) | 2.031 +- 0.0587 (+1.05 %, +0.55 CI) |"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("| 0.001 | slope | never | 0 % | — | — | CI 1.92 % >= 0.10 % |"), std::string::npos) << text;
+  EXPECT_NE(text.find("lag-1 autocorrelation 0.82"), std::string::npos) << text;
   SyntheticRun s;
   s.duration_s = 30.0;
   write_synthetic_run(dir, s);

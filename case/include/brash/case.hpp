@@ -174,8 +174,9 @@ struct SpeedupSpec {
   double neighbor_skin_d = 0.2;         // neighbour-list skin in mean sphere diameters
   double early_stop_rel_ci = 0;         // stop once the 95 % CI of the window mean is below this fraction of
                                         // the mean (checked from window start + 40 % of the window); 0 = off
-  bool early_stop_trend_check = true;   // ... and only when the window's two halves agree (no trend); false = on
-                                        // the CI alone, for records known to be stationary
+  bool early_stop_trend_check = true;   // ... and only when the window's fitted slope is within its CI (no
+                                        // drift; brash/stats/early_stop.hpp); false = on the CI alone, for
+                                        // records known to be stationary
   bool operator==(const SpeedupSpec&) const = default;
 };
 

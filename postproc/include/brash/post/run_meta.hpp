@@ -11,6 +11,17 @@ struct EarlyStopMeta {
   double t_s = 0;                   // model time of the stop; the run's window and duration end here
   double requested_duration_s = 0;  // the case's run.duration_s
   double rel_ci_threshold = 0;      // the 95 % CI of the window mean fell below this fraction of it
+  // runs since the slope test (brash/stats/early_stop.hpp); absent in older meta.json files
+  std::string reason;               // why the rule held, e.g. "CI 0.36 % < 1.00 %, drift -0.40 %/window within ..."
+  std::optional<double> estimate_N, estimate_ci95_N;  // the full window's mean as the rule estimated it, CI95
+  std::optional<double> requested_window_end_s;       // the window's end the case asked for
+};
+
+// meta.json "early_stop_last_check": a run with the early stop on that went on to its end (or is still going):
+// its last check and why the rule did not hold then.
+struct EarlyStopCheckMeta {
+  double t_s = 0;
+  std::string reason;  // e.g. "drift -1.20 %/window > CI 0.90 %"
 };
 
 struct RunMeta {
@@ -22,6 +33,7 @@ struct RunMeta {
   long long exits = 0;  // pieces that left through the channel's open ends (fix brash/exit, World::retire)
   bool culled_far_field = false;  // brash-ode --cull with the window alone (no wake force): spheres outside frozen
   std::optional<EarlyStopMeta> early_stop;
+  std::optional<EarlyStopCheckMeta> early_stop_last_check;
   bool in_progress() const { return status == "running"; }
 };
 
