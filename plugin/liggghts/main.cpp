@@ -8,6 +8,7 @@
 #include "fix_brash_exit.h"
 #include "fix_brash_farfield.h"
 #include "fix_brash_guard.h"
+#include "fix_brash_hullsplit.h"
 #include "fix_brash_window.h"
 #include "fix_icefluid.h"
 #include "input.h"
@@ -29,6 +30,7 @@ constexpr BrashFix kBrashFixes[] = {
     {"brash/guard", &make_fix<brash::liggghts::FixBrashGuard>},
     {"brash/exit", &make_fix<brash::liggghts::FixBrashExit>},
     {"brash/window", &make_fix<brash::liggghts::FixBrashWindow>},
+    {"brash/hullsplit", &make_fix<brash::liggghts::FixBrashHullSplit>},
 };
 
 bool asks_for_help(int argc, char** argv) {

@@ -47,6 +47,14 @@ ForceHistory read_force_history(const std::filesystem::path& path, bool run_in_p
     h.fy_N.push_back(r.fy_N);
     h.fz_N.push_back(r.fz_N);
   }
+  if (record.has_split()) {
+    h.split_N.assign(run::kSplitColumns.size(), {});
+    for (std::size_t k = 0; k < run::kSplitColumns.size(); ++k) {
+      const std::size_t column = record.split_column(k);
+      h.split_N[k].reserve(record.rows.size());
+      for (std::size_t i = 0; i < record.rows.size(); ++i) h.split_N[k].push_back(record.extra_value(i, column));
+    }
+  }
   h.tail_dropped = record.tail_dropped;
   return h;
 }

@@ -250,6 +250,15 @@ RunAnalysis analyze_run(const std::filesystem::path& run_dir) {
   a.fz = stats::block_average(slice(a.force.fz_N, w.i0, w.i1));
   const auto resistance_N = negated(slice(a.force.fx_N, w.i0, w.i1));
   a.resistance = stats::block_average(resistance_N);
+  for (const auto& part : a.force.split_N)
+    a.resistance_split.push_back(stats::block_average(negated(slice(part, w.i0, w.i1))));
+  if (a.force.split_N.empty())
+    a.split_not_recorded =
+        !a.meta.hull_split_not_recorded.empty() ? a.meta.hull_split_not_recorded
+        : force_path.filename() != "hull_force.csv"
+            ? fmt::format("not recorded: {} holds the total force only", force_path.filename().string())
+            : "not recorded: hull_force.csv has no split columns (a run from before the split, or an engine that "
+              "does not record it)";
   if (a.met_no_ice) {  // no resistance: neither its notes nor its full-scale value
     finish_analysis(a);
     return a;
@@ -345,6 +354,33 @@ std::string resistance_markdown(const RunAnalysis& a) {
   return md;
 }
 
+// The hull force split's rows: what each part is, in kSplitParts' order.
+std::array<std::string, 5> split_part_labels(const RunMeta& m) {
+  const auto& p = m.hull_split_par_m;
+  return {p ? fmt::format("bow (x > {:.3f} m, ahead of the parallel mid-body)", (*p)[1]) : "bow",
+          p ? fmt::format("parallel mid-body ({:.3f} to {:.3f} m)", (*p)[0], (*p)[1]) : "parallel mid-body",
+          p ? fmt::format("stern (x < {:.3f} m)", (*p)[0]) : "stern",
+          "normal (push, along each contact's normal)", "tangential (friction)"};
+}
+
+// Where the resistance comes from: the hull force split's table (a few lines), or why there is none.
+std::string split_markdown(const RunAnalysis& a) {
+  std::string md = "## Where the resistance comes from (hull force split)\n\n";
+  if (a.resistance_split.empty())
+    return md + fmt::format("The hull force split is {}.\n\n", a.split_not_recorded);
+  const double to_kN = std::pow(a.case_.scale_lambda, 3) / 1000.0;
+  md += "| part (x: hull frame, from the aft perpendicular) | model scale | share | full scale |\n|---|---|---|---|\n";
+  const auto labels = split_part_labels(a.meta);
+  for (std::size_t k = 0; k < a.resistance_split.size(); ++k) {
+    const auto& b = a.resistance_split[k];
+    md += fmt::format("| {} | {:.4f} ± {:.4f} N | {} | {:.1f} ± {:.1f} kN |\n", labels[k], b.mean, b.ci95,
+                      a.resistance.mean != 0 ? fmt::format("{:.0f} %", 100 * b.mean / a.resistance.mean) : "n/a",
+                      b.mean * to_kN, b.ci95 * to_kN);
+  }
+  return md + "\nBow + mid-body + stern and normal + tangential each add up to the resistance (docs/physics.md, "
+              "\"The hull force split\").\n\n";
+}
+
 }  // namespace
 
 nlohmann::ordered_json report_json(const RunAnalysis& a) {
@@ -393,11 +429,25 @@ nlohmann::ordered_json report_json(const RunAnalysis& a) {
                                                 {"difference", t->difference},
                                                 {"difference_ci95", t->ci95},
                                                 {"drifts", t->drifts()}};
+  if (a.resistance_split.empty()) {
+    j["resistance_split_model_N"] = nullptr;
+    j["resistance_split_not_recorded"] = a.split_not_recorded;
+  } else {
+    J split = J::object();
+    for (std::size_t k = 0; k < a.resistance_split.size(); ++k)
+      split[kSplitParts[k]] = {{"mean", a.resistance_split[k].mean},
+                               {"ci95", a.resistance_split[k].ci95},
+                               {"plateau_found", a.resistance_split[k].plateau_found}};
+    if (const auto& p = a.meta.hull_split_par_m) split["x_par_m"] = {(*p)[0], (*p)[1]};
+    j["resistance_split_model_N"] = split;
+  }
   j["lambda"] = a.case_.scale_lambda;
   j["resistance_full_kN"] = a.resistance_full_kN;
   j["resistance_full_ci95_kN"] = a.resistance_full_ci95_kN;
   if (a.met_no_ice)
-    for (const char* key : {"resistance_model_N", "resistance_full_kN", "resistance_full_ci95_kN"}) j[key] = nullptr;
+    for (const char* key : {"resistance_model_N", "resistance_full_kN", "resistance_full_ci95_kN",
+                            "resistance_split_model_N"})
+      j[key] = nullptr;
   j["fsicr"] = fsicr;
   j["ratio_fsicr_to_sim"] = opt(a.ratio_fsicr_to_sim);
   j["wall_time_s"] = opt(a.meta.wall_time_s);
@@ -472,7 +522,7 @@ std::string report_markdown(const RunAnalysis& a) {
                       "zero, so this run has no resistance (see \"Read first\").\n\n",
                       w.used_s[0], w.used_s[1]);
   else
-    md += resistance_markdown(a);
+    md += resistance_markdown(a) + split_markdown(a);
   md += fmt::format("## FSICR channel resistance (ice class {})\n\n| parameter | value | source |\n|---|---|---|\n", a.fsicr.ice_class);
   for (const auto& [name, field] : fsicr_fields())
     md += fmt::format("| {} | {:.4g} | {} |\n", name, a.fsicr.params.*field, a.fsicr.source.at(name));

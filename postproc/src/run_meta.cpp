@@ -70,6 +70,14 @@ RunMeta read_run_meta(const std::filesystem::path& path) {
       e.requested_window_end_s = w[1].get<double>();
     m.early_stop = e;
   }
+  if (const auto& h = j.value("hull_split", nlohmann::json()); h.is_object()) {
+    std::array<double, 2> par{};
+    take(h, "x_par_aft_m", par[0], path);
+    take(h, "x_par_fwd_m", par[1], path);
+    m.hull_split_par_m = par;
+  } else if (h.is_string()) {
+    m.hull_split_not_recorded = h.get<std::string>();
+  }
   if (j.contains("early_stop_last_check") && j["early_stop_last_check"].is_object()) {
     EarlyStopCheckMeta e;
     take(j["early_stop_last_check"], "t_s", e.t_s, path);

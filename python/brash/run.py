@@ -18,6 +18,10 @@ REQUIRED_FILES = ("case.yaml", "meta.json")
 
 FORCE_FILE = "hull_force.csv"
 FORCE_COLUMNS = ("t_s", "fx_N", "fy_N", "fz_N")
+# The hull force split (docs/physics.md "The hull force split"): fx by hull region, then by mechanism; each set
+# adds up to fx_N. Written by LIGGGHTS and brash-ode; a record without them has no split (never zero).
+SPLIT_COLUMNS = ("fx_bow_N", "fx_mid_N", "fx_stern_N", "fx_normal_N", "fx_tangential_N")
+SPLIT_PARTS = ("bow", "mid", "stern", "normal", "tangential")
 INDEX_FILE = Path("particles") / "index.csv"
 INDEX_COLUMNS = ("step", "t_s", "file", "hull_x_m")
 REPORT_FILE = "report.json"
@@ -65,6 +69,31 @@ def load_run(path: str | Path) -> "Run":
 
 def _optional_float(value: Any) -> float | None:
     return None if value is None else float(value)
+
+
+@dataclass(frozen=True)
+class SplitPart:
+    """One part of the hull force split: its resistance (-fx) over the window, as brash-post averages it."""
+
+    mean_N: float
+    ci95_N: float
+    full_kN: float | None
+    full_ci95_kN: float | None
+
+
+@dataclass(frozen=True)
+class ResistanceSplit:
+    """Where the resistance comes from (report.json resistance_split_model_N): by hull region (bow, mid, stern)
+    and by mechanism (normal, tangential); each set adds up to the resistance."""
+
+    parts: dict[str, SplitPart]
+    x_par_m: tuple[float, float] | None  # the parallel mid-body, hull frame (x = 0 at the aft perpendicular)
+
+    def __getitem__(self, part: str) -> SplitPart:
+        return self.parts[part]
+
+    def __str__(self) -> str:
+        return "; ".join(f"{name} {p.mean_N:.4g} ± {p.ci95_N:.2g} N" for name, p in self.parts.items())
 
 
 class Run:
@@ -148,7 +177,21 @@ class Run:
             if not pd.api.types.is_numeric_dtype(df[c]):
                 raise RunError(f"{self.path / FORCE_FILE}: column {c} is not numeric")
         df["resistance_N"] = -df["fx_N"]
+        if self.has_split:
+            for c in SPLIT_COLUMNS:
+                if not pd.api.types.is_numeric_dtype(df[c]):
+                    raise RunError(f"{self.path / FORCE_FILE}: column {c} is not numeric")
         return df
+
+    @property
+    def has_split(self) -> bool:
+        """Whether hull_force.csv records the hull force split (every column of SPLIT_COLUMNS)."""
+        file = self.path / FORCE_FILE
+        if not file.is_file():
+            return False
+        with open(file, encoding="utf-8") as f:
+            header = f.readline().strip().split(",")
+        return all(c in header for c in SPLIT_COLUMNS)
 
     # ---- particle snapshots ------------------------------------------------------------------------
     @cached_property
@@ -219,3 +262,31 @@ class Run:
             ratio_fsicr_to_sim=_optional_float(rep.get("ratio_fsicr_to_sim")),
             notes=tuple(rep.get("notes", [])),
         )
+
+    def resistance_split(self) -> ResistanceSplit:
+        """The resistance of each part of the hull force split over the window, from report.json; RunError saying
+        why when the run has none (an engine that does not record it, a run from before the split)."""
+        rep = self.report
+        if rep is None:
+            raise RunError(f"{self.path / REPORT_FILE} is missing: run `brash-post {self.path}` first")
+        file = self.path / REPORT_FILE
+        split = rep.get("resistance_split_model_N")
+        if split is None:
+            why = rep.get("resistance_split_not_recorded")
+            if rep.get("met_no_ice"):
+                why = "the hull met no ice in the averaging window (report.json met_no_ice)"
+            raise RunError(f"{file}: no hull force split: {why or 'resistance_split_model_N is null'}")
+        if not isinstance(split, dict):
+            raise RunError(f"{file}: resistance_split_model_N is not an object: {split!r}")
+        scale = rep.get("lambda")
+        to_kN = float(scale) ** 3 / 1000.0 if scale is not None else None
+        parts = {}
+        for name in SPLIT_PARTS:
+            p = split.get(name)
+            if not isinstance(p, dict) or p.get("mean") is None or p.get("ci95") is None:
+                raise RunError(f"{file}: resistance_split_model_N.{name} has no mean / ci95: {p!r}")
+            mean, ci95 = float(p["mean"]), float(p["ci95"])
+            parts[name] = SplitPart(mean, ci95, None if to_kN is None else mean * to_kN,
+                                    None if to_kN is None else ci95 * to_kN)
+        x_par = split.get("x_par_m")
+        return ResistanceSplit(parts, (float(x_par[0]), float(x_par[1])) if isinstance(x_par, list) else None)

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <charconv>
 #include <iterator>
+#include <stdexcept>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -49,6 +50,26 @@ ColumnPlan plan_columns(const std::filesystem::path& csv, const CsvHeader& heade
 }
 
 }  // namespace
+
+std::size_t ForceRecord::split_column(std::size_t k) const {
+  return static_cast<std::size_t>(std::find(extra_columns.begin(), extra_columns.end(), kSplitColumns.at(k)) -
+                                  extra_columns.begin());
+}
+
+bool ForceRecord::has_split() const {
+  for (std::size_t k = 0; k < kSplitColumns.size(); ++k)
+    if (split_column(k) == extra_columns.size()) return false;
+  return true;
+}
+
+void ForceRecord::set_split(const std::vector<double>& values) {
+  const std::size_t n = kSplitColumns.size();
+  if (!extra_columns.empty() || values.size() != rows.size() * n)
+    throw std::logic_error(fmt::format("ForceRecord::set_split: {} values for {} rows and {} further columns",
+                                       values.size(), rows.size(), extra_columns.size()));
+  extra_columns.assign(kSplitColumns.begin(), kSplitColumns.end());
+  extra = values;
+}
 
 std::string hull_force_csv_text(const ForceRecord& record) {
   std::string out = expected_header();

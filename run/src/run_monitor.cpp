@@ -102,7 +102,7 @@ bool RunMonitor::check_early_stop(double t_s) {
       t_s < t0 + stats::kEarlyStopFirstCheckFraction * (t1 - t0))
     return false;
   std::vector<double> resistance;
-  for (const auto& row : engine_.force_record(run_dir_, t_s))
+  for (const auto& row : engine_.force_record(run_dir_, t_s).rows)
     if (row.t_s >= t0 - 1e-12) resistance.push_back(-row.fx_N);
   const auto v = stats::early_stop_verdict(resistance, t_s, t0, t1, rel_ci, case_.speedups.early_stop_trend_check);
   if (!v.checked) return false;

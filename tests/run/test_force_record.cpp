@@ -147,3 +147,33 @@ TEST_F(ForceRecordFile, MissingFileIsNamed) {
     EXPECT_TRUE(mentions(e.what(), (dir_ / "none.csv").string()));
   }
 }
+
+// The hull force split's columns (kSplitColumns) go through the one writer and reader like any further column, and
+// the record names them: has_split and split_column find each part by name, whatever the file's column order.
+TEST_F(ForceRecordFile, SplitColumnsRoundTripAndAreFoundByName) {
+  ForceRecord r;
+  r.rows = {{0.01, -3.0, 0.5, -1.0}, {0.02, -5.0, 0.25, -2.0}};
+  EXPECT_FALSE(r.has_split());
+  r.set_split({-2.0, -0.5, -0.5, -1.25, -1.75, -4.0, -1.0, 0.0, -3.5, -1.5});
+  ASSERT_TRUE(r.has_split());
+  brash::run::write_hull_force_csv(csv_, r);
+  EXPECT_EQ(slurp().substr(0, slurp().find('\n')),
+            "t_s,fx_N,fy_N,fz_N,fx_bow_N,fx_mid_N,fx_stern_N,fx_normal_N,fx_tangential_N");
+  const ForceRecord back = brash::run::read_hull_force_csv(csv_, false);
+  ASSERT_TRUE(back.has_split());
+  EXPECT_EQ(back.extra_value(1, back.split_column(0)), -4.0);
+  EXPECT_EQ(back.extra_value(1, back.split_column(4)), -1.5);
+  // another order of the columns: found by name
+  write("t_s,fx_tangential_N,fx_N,fy_N,fz_N,fx_normal_N,fx_stern_N,fx_mid_N,fx_bow_N\n0.01,-1.75,-3,0.5,-1,-1.25,-0.5,-0.5,-2\n");
+  const ForceRecord shuffled = brash::run::read_hull_force_csv(csv_, false);
+  ASSERT_TRUE(shuffled.has_split());
+  EXPECT_EQ(shuffled.extra_value(0, shuffled.split_column(0)), -2.0);     // bow
+  EXPECT_EQ(shuffled.extra_value(0, shuffled.split_column(4)), -1.75);    // tangential
+  // a record with part of the split has none
+  write("t_s,fx_N,fy_N,fz_N,fx_bow_N,fx_mid_N\n0.01,-3,0.5,-1,-2,-1\n");
+  EXPECT_FALSE(brash::run::read_hull_force_csv(csv_, false).has_split());
+  // the split is set on a record without further columns, one block of five per row
+  ForceRecord wrong;
+  wrong.rows = r.rows;
+  EXPECT_THROW(wrong.set_split({1.0, 2.0}), std::logic_error);
+}

@@ -1,6 +1,7 @@
 #include "liggghts_engine.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -12,7 +13,9 @@
 
 #include "brash/case_hull_flow.hpp"
 #include "brash/run/child_process.hpp"
+#include "brash/run/hull_regions.hpp"
 #include "brash/error.hpp"
+#include "brash/hull/hydrostatics.hpp"
 #include "brash/hull/panel_flow.hpp"
 #include "brash/run/run_layout.hpp"
 #include "brash/run/runner_setup.hpp"
@@ -29,11 +32,19 @@ std::vector<fs::path> hull_force_raws(const fs::path& run_dir) {
   return parts;
 }
 
-// Rows of hull_force*.raw (fix ave/time: "step t fx fy fz") by step. The raw files of a resumed run are read in
-// order; a later file's row for a step replaces an earlier one. While a resumed run goes, an earlier attempt's
-// rows beyond the current time are not (yet) this run's: t_max_s leaves them out.
-std::vector<run::ForceRow> read_hull_force_raws(const std::vector<fs::path>& raws, double t_max_s) {
-  std::map<long, run::ForceRow> rows;
+// Rows of hull_force*.raw (fix ave/time: "step t fx fy fz", then the hull force split of fix brash/hullsplit
+// when the deck records it: kSplitColumns) by step. The raw files of a resumed run are read in order; a later
+// file's row for a step replaces an earlier one. While a resumed run goes, an earlier attempt's rows beyond the
+// current time are not (yet) this run's: t_max_s leaves them out. The split is kept when every row has it (an
+// attempt from an older deck has none: then the record has no split rather than part of one).
+run::ForceRecord read_hull_force_raws(const std::vector<fs::path>& raws, double t_max_s) {
+  constexpr std::size_t n_split = run::kSplitColumns.size();
+  struct Row {
+    run::ForceRow r;
+    std::array<double, n_split> split{};
+    bool has_split = false;
+  };
+  std::map<long, Row> rows;
   for (const auto& raw : raws) {
     std::ifstream in(raw);
     std::string line;
@@ -42,19 +53,31 @@ std::vector<run::ForceRow> read_hull_force_raws(const std::vector<fs::path>& raw
       if (line.empty() || line[0] == '#') continue;
       std::istringstream ss(line);
       long step;
-      run::ForceRow r;
+      Row row;
+      run::ForceRow& r = row.r;
       if (!(ss >> step >> r.t_s >> r.fx_N >> r.fy_N >> r.fz_N)) continue;  // a truncated last line of a killed run
+      std::size_t k = 0;
+      while (k < n_split && ss >> row.split[k]) ++k;
+      if (k != 0 && k != n_split) continue;  // a split cut short: the truncated last line of a killed run
+      row.has_split = k == n_split;
       if (first_step < 0) first_step = step;
       // A resumed attempt's first row is its set-up (no contact force summed yet: 0): never a record. The
       // earlier attempt's row for that step is kept; without one the step is missing, which brash-post names
       // as a gap.
       if (step == first_step && &raw != &raws.front()) continue;
-      rows[step] = r;
+      rows[step] = row;
     }
   }
-  std::vector<run::ForceRow> out;
-  for (const auto& [step, r] : rows)
-    if (r.t_s <= t_max_s) out.push_back(r);
+  run::ForceRecord out;
+  std::vector<double> split;
+  bool every_row_split = true;
+  for (const auto& [step, row] : rows) {
+    if (row.r.t_s > t_max_s) continue;
+    out.rows.push_back(row.r);
+    every_row_split = every_row_split && row.has_split;
+    split.insert(split.end(), row.split.begin(), row.split.end());
+  }
+  if (every_row_split && !out.rows.empty()) out.set_split(split);
   return out;
 }
 
@@ -140,7 +163,8 @@ nlohmann::json LiggghtsEngine::meta() const {
   return {{"engine_version", "LIGGGHTS 3.8.0 (Debian libliggghts) + fix icefluid"},
           {"ranks", ranks_},
           {"launcher", launch_prefix_.empty() ? "none (one rank)" : launch_prefix_.substr(0, launch_prefix_.size() - 1)},
-          {"particles", spheres_.size()}};  // the half channel's with speedups.symmetry_y
+          {"particles", spheres_.size()},  // the half channel's with speedups.symmetry_y
+          {"hull_split", run::hull_split_meta(options_.hull_regions)}};
 }
 
 void LiggghtsEngine::load(const Case& c, const fs::path& case_file, const std::vector<Sphere>& spheres) {
@@ -156,6 +180,8 @@ void LiggghtsEngine::load(const Case& c, const fs::path& case_file, const std::v
     throw InputError(fmt::format("{}: channel.width_m = {} m is not wider than the hull ({} m across in {}): the "
                                  "channel walls would cut the hull",
                                  case_file.string(), c.channel.width_m, 2 * half_beam, c.hull.file.string()));
+  // the hull force split's regions: the parallel mid-body measured on the full hull (brash/core/hull_split.hpp)
+  options_.hull_regions = run::measure_hull_regions(full_mesh_, c, case_file);
   contact_mesh_ = full_mesh_;
   if (c.hull.band_m)
     contact_mesh_ = hull::clip_band(contact_mesh_, c.hull.draft_m - (*c.hull.band_m)[0], c.hull.draft_m + (*c.hull.band_m)[1]);
@@ -209,7 +235,7 @@ std::vector<std::string> LiggghtsEngine::restarts(const fs::path& run_dir) const
   return out;
 }
 
-std::vector<run::ForceRow> LiggghtsEngine::force_record(const fs::path& run_dir, double t_max_s) const {
+run::ForceRecord LiggghtsEngine::force_record(const fs::path& run_dir, double t_max_s) const {
   return read_hull_force_raws(hull_force_raws(run_dir), t_max_s);
 }
 

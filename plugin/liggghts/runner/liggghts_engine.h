@@ -35,7 +35,7 @@ class LiggghtsEngine final : public run::Engine {
   void write_scene(const std::filesystem::path& run_dir, bool resume) override;
   std::vector<std::string> restarts(const std::filesystem::path& run_dir) const override;
   run::Attempt advance(const std::filesystem::path& run_dir, const std::string& restart, run::Monitor& m) override;
-  std::vector<run::ForceRow> force_record(const std::filesystem::path& run_dir, double t_max_s) const override;
+  run::ForceRecord force_record(const std::filesystem::path& run_dir, double t_max_s) const override;
   void finish(const std::filesystem::path& run_dir) override;
 
  private:
@@ -54,7 +54,7 @@ class LiggghtsEngine final : public run::Engine {
 // (hull_force.part<k>.raw), then the current one.
 std::vector<std::filesystem::path> hull_force_raws(const std::filesystem::path& run_dir);
 // Rows of the raw files by model time, up to t_max_s (see liggghts_engine.cpp for how attempts overlap).
-std::vector<run::ForceRow> read_hull_force_raws(const std::vector<std::filesystem::path>& raws, double t_max_s);
+run::ForceRecord read_hull_force_raws(const std::vector<std::filesystem::path>& raws, double t_max_s);
 // LIGGGHTS dumps -> particles/particles_<step>.csv, then particles/index.csv of every snapshot; the number of
 // dumps converted.
 std::size_t convert_dumps(const std::filesystem::path& run_dir, const Case& c);

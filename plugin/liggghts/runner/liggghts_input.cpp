@@ -171,7 +171,9 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
   s += fmt::format("fix hull all mesh/surface/stress file {} type 2 move {:.9g} 0 {:.9g} curvature_tolerant yes "
                    "reference_point 0 0 0\n",
                    opt.hull_file, hull_x0, -c.hull.draft_m);
-  s += "fix hullwall all wall/gran model hertz tangential history mesh n_meshes 1 meshes hull\n";
+  // store_force_contact_stress: each hull contact's force and contact vector, per piece, for fix brash/hullsplit
+  s += "fix hullwall all wall/gran model hertz tangential history mesh n_meshes 1 meshes hull "
+       "store_force_contact_stress yes\n";
   s += wall_lines(c, sp.symmetry_y, c.channel.ends == ChannelEnds::Walls);
   s += fmt::format("fix mv all move/mesh mesh hull linear {:.9g} 0 0\n", c.ship.speed_m_s);
   if (sp.farfield) {
@@ -227,12 +229,19 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
                         c.ship.speed_m_s)
           : std::string());
   s += fmt::format("variable t equal step*dt\n");
+  // the hull force split (brash/core/hull_split.hpp): fx by region and by mechanism from the hull's contacts,
+  // the whole ship's with speedups.symmetry_y (twice the half hull's, as hfx below)
+  const auto& hr = opt.hull_regions;
+  s += fmt::format("fix split all brash/hullsplit mesh hull hull_x0 {:.9g} speed {:.9g} par_aft {:.9g} par_fwd {:.9g} "
+                   "scale {}\n",
+                   hull_x0, c.ship.speed_m_s, hr.x_par_aft_m, hr.x_par_fwd_m, sp.symmetry_y ? 2 : 1);
+  const std::string split = " f_split[1] f_split[2] f_split[3] f_split[4] f_split[5]";
   if (sp.symmetry_y) {  // the whole ship: twice the half hull's fx, fz; fy = 0 by symmetry
     s += "variable hfx equal 2*f_hull[1]\nvariable hfy equal 0\nvariable hfz equal 2*f_hull[3]\n";
-    s += fmt::format("fix hf all ave/time {0} 1 {0} v_t v_hfx v_hfy v_hfz file hull_force.raw\n", out_every);
+    s += fmt::format("fix hf all ave/time {0} 1 {0} v_t v_hfx v_hfy v_hfz{1} file hull_force.raw\n", out_every, split);
   } else {
-    s += fmt::format("fix hf all ave/time {0} 1 {0} v_t f_hull[1] f_hull[2] f_hull[3] file hull_force.raw\n",
-                     out_every);
+    s += fmt::format("fix hf all ave/time {0} 1 {0} v_t f_hull[1] f_hull[2] f_hull[3]{1} file hull_force.raw\n",
+                     out_every, split);
   }
   s += fmt::format(
       "dump parts all custom {} particles/dump.*.txt id x y z radius vx vy vz f_fl[1] f_fl[2] f_fl[3] f_fl[4] "

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "brash/case.hpp"
+#include "brash/core/hull_split.hpp"
 #include "brash/hull/mesh.hpp"
 #include "brash/packing.hpp"
 
@@ -26,6 +27,8 @@ struct SceneOptions {
   double hull_x_min_m = 0;      // x extent of the hull in the STL frame (stern, bow) for speedups.farfield
   double hull_x_max_m = 0;
   double hull_half_beam_m = 0;  // largest |y| of the hull, for speedups.farfield_beside_m
+  // The hull force split's regions (fix brash/hullsplit, recorded in hull_force.raw after fx fy fz)
+  core::HullRegions hull_regions;
 };
 
 struct Box {

@@ -21,6 +21,7 @@
 #include "brash/error.hpp"
 #include "brash/run/force_record.hpp"
 #include "brash/run/guard.hpp"
+#include "brash/run/hull_regions.hpp"
 #include "brash/hull/flow.hpp"
 #include "brash/hull/mesh.hpp"
 #include "brash/hull/proximity.hpp"
@@ -56,6 +57,7 @@ struct OdeEngine::Scene {
   Skips skips;                        // far_field_skips of the case
   ImplicitMode implicit = ImplicitMode::EffectiveMass;
   std::vector<Vec3> velocity_m_s;     // the pieces' starting velocities (--scene-from; empty: at rest)
+  core::HullRegions hull_regions;     // the hull force split's, measured on the full hull
 };
 
 OdeEngine::OdeEngine(RunOptions options) : options_(std::move(options)) {}
@@ -84,6 +86,7 @@ nlohmann::json OdeEngine::meta() const {
                  {"cull_wake_force_N", k.wake_force_N}, {"cull_wake_speed_m_s", k.wake_speed_m_s},
                  {"cull_wake_by", std::string(to_string(k.wake_by))},
                  {"cull_front_speed_m_s", k.front_speed_m_s}}},
+      {"hull_split", run::hull_split_meta(scene_->hull_regions)},
       {"resumes", nlohmann::json::array()}};
 }
 
@@ -95,7 +98,7 @@ OdeEngine::WakeRefusal OdeEngine::wake_refusal(WakeBy by) const {
           WakeBy::Force};
 }
 
-void OdeEngine::load(const Case& case_in, const fs::path& /*case_file*/, const std::vector<Sphere>& packing) {
+void OdeEngine::load(const Case& case_in, const fs::path& case_file, const std::vector<Sphere>& packing) {
   scene_ = std::make_unique<Scene>();
   Scene& s = *scene_;
   Case c = case_in;
@@ -129,6 +132,7 @@ void OdeEngine::load(const Case& case_in, const fs::path& /*case_file*/, const s
   s.spheres = spheres;
   s.contact_mesh = hull::read_mesh(c.hull.file);
   hull::require_plausible_units(s.contact_mesh, c.hull.file, c.hull.draft_m, c.hull.lpp_m);
+  s.hull_regions = run::measure_hull_regions(s.contact_mesh, c, case_file);  // the full hull (before a band)
   // Run-time guards (brash::guard, docs/stability.md): the limits of the LIGGGHTS scene box of the same case (from
   // the full hull's extents) and the hull penetration query on the full closed hull, even when the contact mesh
   // is a band (a piece slipping under the band ends up inside the full hull).
@@ -151,10 +155,15 @@ std::vector<std::string> OdeEngine::restarts(const fs::path& run_dir) const {
   return {"restart/restart_<step>.bin (the newest intact)"};
 }
 
-std::vector<run::ForceRow> OdeEngine::force_record(const fs::path& /*run_dir*/, double t_max_s) const {
-  std::vector<run::ForceRow> out;
-  for (const auto& r : rows_)
-    if (r.t_s <= t_max_s + 1e-9) out.push_back(r);
+run::ForceRecord OdeEngine::force_record(const fs::path& /*run_dir*/, double t_max_s) const {
+  run::ForceRecord out;
+  out.extra_columns = record_.extra_columns;
+  const std::size_t n_extra = record_.extra_columns.size();
+  for (std::size_t i = 0; i < record_.rows.size() && record_.rows[i].t_s <= t_max_s + 1e-9; ++i) {
+    out.rows.push_back(record_.rows[i]);
+    out.extra.insert(out.extra.end(), record_.extra.begin() + std::ptrdiff_t(i * n_extra),
+                     record_.extra.begin() + std::ptrdiff_t((i + 1) * n_extra));
+  }
   return out;
 }
 
@@ -170,9 +179,9 @@ std::string front_note(const World& w) {
 // restart files, hull_force.csv before each restart file so that a resume finds the rows up to it).
 class Stepping {
  public:
-  Stepping(const RunOptions& o, const OdeEngine::Scene& s, const fs::path& run_dir, std::vector<run::ForceRow>& rows,
+  Stepping(const RunOptions& o, const OdeEngine::Scene& s, const fs::path& run_dir, run::ForceRecord& record,
            run::Monitor& monitor)
-      : o_(o), s_(s), c_(s.c), dt_(s.stepper.dt_s), run_dir_(run_dir), rows_(rows), monitor_(monitor) {}
+      : o_(o), s_(s), c_(s.c), dt_(s.stepper.dt_s), run_dir_(run_dir), record_(record), monitor_(monitor) {}
   run::Attempt run(bool resume, RunSummary& summary);
 
  private:
@@ -195,7 +204,7 @@ class Stepping {
   const Case& c_;
   const double dt_;
   fs::path run_dir_;
-  std::vector<run::ForceRow>& rows_;
+  run::ForceRecord& record_;  // the rows, with the hull force split's columns unless resumed from a record without
   run::Monitor& monitor_;
   std::unique_ptr<World> w_;
   std::vector<std::size_t> order_;  // world slot -> piece index in the packing (the spheres in a spatial order)
@@ -203,6 +212,7 @@ class Stepping {
   // loop state that a restart file carries besides the world
   long k0_ = 0, win_n_ = 0, ps_settle_ = 0;
   Vec3 acc_ = Vec3::Zero();
+  core::HullSplit acc_split_{};
   double win_sum_ = 0;
   Stats stats0_;
   long steps_ = 0, n_out_ = 1, n_dump_ = 1, n_restart_ = 0, n_check_ = 1, k_end_ = 0, ps_loop0_ = 0;
@@ -251,6 +261,7 @@ void Stepping::build_world() {
     w_->add_wall_box(Vec3(c_.channel.length_m + 0.025, 0, -0.25), Vec3(0.05, c_.channel.width_m, 1.5));
   }
   w_->set_hull(std::move(verts), std::move(tris), Vec3(c_.hull.start_x_m, 0, 0), Vec3::Zero());
+  w_->set_hull_regions(s_.hull_regions);
 }
 
 void Stepping::log_scene() {
@@ -353,6 +364,7 @@ void Stepping::restore(run::Attempt& a) {
   stats0_.wall_collide_s = r.get<double>();
   stats0_.wall_step_s = r.get<double>();
   acc_ = r.get_vec3();
+  for (double& v : acc_split_) v = r.get<double>();
   win_sum_ = r.get<double>();
   win_n_ = r.get<long>();
   r.get<double>();  // the wall time up to the restart (meta.json keeps the run's)
@@ -360,9 +372,12 @@ void Stepping::restore(run::Attempt& a) {
   if (w_->restore_inexact())
     log(fmt::format("resume: {} sphere quaternions restored within a few ulps, not bit for bit", w_->restore_inexact()));
   const double t_r = double(k0_) * dt_;
-  const std::size_t before = rows_.size();
-  std::erase_if(rows_, [&](const run::ForceRow& row) { return row.t_s > t_r + 0.25 * dt_; });
-  const std::size_t dropped = before - rows_.size();
+  auto& rows = record_.rows;
+  const std::size_t before = rows.size();
+  const auto kept = std::find_if(rows.begin(), rows.end(), [&](const run::ForceRow& row) { return row.t_s > t_r + 0.25 * dt_; });
+  rows.erase(kept, rows.end());  // rows in time order
+  record_.extra.resize(rows.size() * record_.extra_columns.size());
+  const std::size_t dropped = before - rows.size();
   std::istringstream ix(read_text(run_dir_ / "particles" / "index.csv"));
   std::string line;
   std::getline(ix, line);
@@ -374,7 +389,7 @@ void Stepping::restore(run::Attempt& a) {
                                {"rejected", found.rejected}, {"hull_force_rows_dropped", dropped},
                                {"quaternions_inexact", w_->restore_inexact()}});
   log(fmt::format("resumed from {} at step {} (t = {} s): kept {} hull force rows, dropped {} later ones",
-                  found.file.string(), k0_, t_r, rows_.size(), dropped));
+                  found.file.string(), k0_, t_r, rows.size(), dropped));
 }
 
 void Stepping::save_restart(long step) {
@@ -385,6 +400,7 @@ void Stepping::save_restart(long step) {
   rw.put<double>(stats0_.wall_collide_s);
   rw.put<double>(stats0_.wall_step_s);
   rw.put(acc_);
+  for (const double v : acc_split_) rw.put<double>(v);
   rw.put<double>(win_sum_);
   rw.put<long>(win_n_);
   rw.put<double>(std::chrono::duration<double>(std::chrono::steady_clock::now() - loop0_).count());
@@ -416,7 +432,7 @@ void Stepping::dump(long step) {
 }
 
 void Stepping::flush() {
-  run::write_hull_force_csv(run_dir_ / "hull_force.csv", rows_);
+  run::write_hull_force_csv(run_dir_ / "hull_force.csv", record_);
   run::write_atomic(run_dir_ / "log.txt", log_);
 }
 
@@ -461,13 +477,18 @@ bool Stepping::step(long k, run::Attempt& a) {
   const Vec3& f = w.hull_force();
   if (!f.allFinite()) throw std::runtime_error(fmt::format("non-finite hull force at t = {} s (step {})", double(k) * dt_, k));
   acc_ += f;
+  const core::HullSplit& split = w.hull_split();
+  for (std::size_t j = 0; j < split.size(); ++j) acc_split_[j] += split[j];
   const double t = double(k) * dt_;
   if (t >= c_.run.window_s[0] - 1e-12 && t <= c_.run.window_s[1] + 1e-12) win_sum_ += f.x(), ++win_n_;
   if (k % n_out_ == 0) {
     const Vec3 m = acc_ / double(n_out_);
     // the row as written (the early stop reads what a replay of hull_force.csv reads)
-    rows_.push_back({t, run::as_recorded(m.x()), run::as_recorded(m.y()), run::as_recorded(m.z())});
+    record_.rows.push_back({t, run::as_recorded(m.x()), run::as_recorded(m.y()), run::as_recorded(m.z())});
+    if (!record_.extra_columns.empty())  // the split's columns (advance: a record has all of them or none)
+      for (const double v : acc_split_) record_.extra.push_back(run::as_recorded(v / double(n_out_)));
     acc_.setZero();
+    acc_split_.fill(0);
   }
   a.t_last_s = t;
   a.particle_steps = double(w.stats().particle_steps - ps_loop0_);
@@ -573,15 +594,22 @@ run::Attempt Stepping::run(bool resume, RunSummary& summary) {
 
 run::Attempt OdeEngine::advance(const fs::path& run_dir, const std::string& restart, run::Monitor& monitor) {
   const bool resume = !restart.empty();
-  rows_.clear();
-  // the record so far (written whole before each restart file); the restart point decides which rows stay
-  if (resume && fs::exists(run_dir / "hull_force.csv"))
-    rows_ = run::read_hull_force_csv(run_dir / "hull_force.csv", /*drop_unterminated_tail=*/false).rows;
+  // the record so far (written whole before each restart file); the restart point decides which rows stay. A new
+  // run records the hull force split; a resumed one only when its record so far has it (a run from before the
+  // split goes on without it rather than with part of one).
+  record_ = {};
+  record_.extra_columns.assign(run::kSplitColumns.begin(), run::kSplitColumns.end());
+  if (resume && fs::exists(run_dir / "hull_force.csv")) {
+    record_ = run::read_hull_force_csv(run_dir / "hull_force.csv", /*drop_unterminated_tail=*/false);
+    if (!std::equal(record_.extra_columns.begin(), record_.extra_columns.end(), run::kSplitColumns.begin(),
+                    run::kSplitColumns.end()))
+      record_.extra_columns.clear(), record_.extra.clear();
+  }
   if (const Skips& k = scene_->skips; k.cull && !k.wake_rule().enabled())
     fmt::print(stderr, "[brash-ode] warning: the far field with no wake rule (the window alone): the push of the bow "
                        "cannot reach past the window and the mean resistance is biased high "
                        "(docs/performance.md, \"The idle far field\")\n");
-  Stepping stepping(options_, *scene_, run_dir, rows_, monitor);
+  Stepping stepping(options_, *scene_, run_dir, record_, monitor);
   return stepping.run(resume, summary_);
 }
 

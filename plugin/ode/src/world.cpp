@@ -548,6 +548,7 @@ void World::create_joints() {
     return x.slot < y.slot;
   });
   const core::WakeRule rule = wake_rule();
+  const double hull_x_m = hull_position().x();  // the hull's frame where the contacts were found
   for (const auto& o : joint_order_) {
     auto& p = pending_[o.index];
     dJointID j = dJointCreateContact(world_, contacts_, &p.c);
@@ -555,6 +556,7 @@ void World::create_joints() {
     if (p.hull) {
       hull_feedback_.emplace_back();
       dJointSetFeedback(j, &hull_feedback_.back());
+      hull_contact_.push_back({p.c.geom.pos[0] - hull_x_m, {p.c.geom.normal[0], p.c.geom.normal[1], p.c.geom.normal[2]}});
     } else if (p.idle != kNoSphere) {
       idle_fed_.push_back(p.idle);
       if (rule.reads_force()) {
@@ -579,6 +581,7 @@ void World::step() {
   stats_.wall_fluid_s += seconds_since(t0);
   t0 = clock::now();
   hull_feedback_.clear();
+  hull_contact_.clear();
   idle_feedback_.clear();
   idle_fed_.clear();
   idle_toucher_v_.clear();
@@ -594,6 +597,12 @@ void World::step() {
   Vec3 f = Vec3::Zero();
   for (const auto& fb : hull_feedback_) f -= Vec3(fb.f1[0], fb.f1[1], fb.f1[2]);
   hull_force_N_ = f;
+  hull_split_.fill(0);
+  for (std::size_t k = 0; k < hull_contact_.size(); ++k) {
+    const dJointFeedback& fb = hull_feedback_[k];
+    const double on_hull[3] = {-fb.f1[0], -fb.f1[1], -fb.f1[2]};
+    core::add_contact_x(hull_split_, hull_regions_, hull_contact_[k].x_hull_m, on_hull, hull_contact_[k].normal);
+  }
   hull_contacts_ = hull_feedback_.size();
   wake_pushed();
   dJointGroupEmpty(contacts_);

@@ -47,7 +47,11 @@ run::ChildCommand yade_command(const fs::path& run_dir, int threads, const std::
 nlohmann::json YadeEngine::meta() const {
   return {{"engine_version", "YADE 2023.02a (Debian yade) + brash_yade PyRunner adapter"},
           {"ranks", 1},
-          {"threads", threads_}};
+          {"threads", threads_},
+          // no hull force split on YADE: its scene sums one total force on the hull (brash-post says the split is
+          // not recorded, naming this)
+          {"hull_split", "not recorded: the YADE scene records the total hull force only (LIGGGHTS and brash-ode "
+                         "record the split)"}};
 }
 
 void YadeEngine::load(const Case& c, const fs::path& /*case_file*/, const std::vector<Sphere>& spheres) {
@@ -140,13 +144,15 @@ std::vector<std::string> YadeEngine::restarts(const fs::path& run_dir) const {
 
 // The scene writes hull_force_yade.csv as it goes (a resumed scene first rewrites it with the rows before its
 // restart point); the driver makes hull_force.csv of it. The scene's writes are buffered: its last line may be
-// cut (read while it writes, or the scene was killed) and is left out. No file yet: no rows.
-std::vector<run::ForceRow> YadeEngine::force_record(const fs::path& run_dir, double t_max_s) const {
+// cut (read while it writes, or the scene was killed) and is left out. No file yet: no rows. The total only: the
+// scene records no hull force split (meta.json "hull_split" says so).
+run::ForceRecord YadeEngine::force_record(const fs::path& run_dir, double t_max_s) const {
   const fs::path file = run_dir / "hull_force_yade.csv";
   if (!fs::exists(file)) return {};
-  std::vector<run::ForceRow> rows = run::read_hull_force_csv(file, /*drop_unterminated_tail=*/true).rows;
-  std::erase_if(rows, [&](const run::ForceRow& r) { return r.t_s > t_max_s; });
-  return rows;
+  run::ForceRecord record;
+  record.rows = run::read_hull_force_csv(file, /*drop_unterminated_tail=*/true).rows;
+  std::erase_if(record.rows, [&](const run::ForceRow& r) { return r.t_s > t_max_s; });
+  return record;
 }
 
 // Runs YADE, mirrors its output to log.txt, its "[brash-yade] t = T / D s ..." lines to the monitor and its other

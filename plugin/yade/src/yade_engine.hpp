@@ -24,7 +24,7 @@ class YadeEngine final : public run::Engine {
   void write_scene(const std::filesystem::path& run_dir, bool resume) override;
   std::vector<std::string> restarts(const std::filesystem::path& run_dir) const override;
   run::Attempt advance(const std::filesystem::path& run_dir, const std::string& restart, run::Monitor& m) override;
-  std::vector<run::ForceRow> force_record(const std::filesystem::path& run_dir, double t_max_s) const override;
+  run::ForceRecord force_record(const std::filesystem::path& run_dir, double t_max_s) const override;
 
  private:
   nlohmann::json guards_json(const std::filesystem::path& run_dir) const;

@@ -8,6 +8,9 @@ namespace brash::post {
 
 struct ForceHistory {
   std::vector<double> t_s, fx_N, fy_N, fz_N;
+  // The hull force split (brash::run::kSplitColumns, in that order: fx of bow, mid-body, stern, normal,
+  // tangential), one vector per part; empty when the record has none (then it is not recorded, never zero).
+  std::vector<std::vector<double>> split_N;
   bool tail_dropped = false;  // an unterminated last record was ignored (run still being written)
 };
 

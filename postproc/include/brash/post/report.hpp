@@ -63,6 +63,11 @@ struct RunAnalysis {
   // Every force sample of the window is zero: the record holds contact forces only, so the hull touched no ice
   // there and there is no resistance to report (resistance and its full-scale value are not shown).
   bool met_no_ice = false;
+  // The hull force split over the window (docs/physics.md "The hull force split"): the resistance (-fx) of each
+  // part, in kSplitParts' order, as resistance is averaged; empty when the record has no split, and then
+  // split_not_recorded says why (never shown as 0).
+  std::vector<stats::BlockingResult> resistance_split;
+  std::string split_not_recorded;
   std::optional<stats::HalvesTrend> resistance_trend;  // the window's two halves (>= kMinTrendSamples samples)
   double resistance_full_kN = 0, resistance_full_ci95_kN = 0;
   FsicrSummary fsicr;
@@ -71,6 +76,9 @@ struct RunAnalysis {
   std::optional<BandCheck> band;   // set by brash-post's report when the case has a contact band and snapshots
   std::vector<std::string> notes;  // everything a reader must know (truncation, fallbacks, ...)
 };
+
+// The parts of the hull force split, in the order of brash::run::kSplitColumns: report.json's keys.
+inline constexpr std::array<const char*, 5> kSplitParts{"bow", "mid", "stern", "normal", "tangential"};
 
 // Fewest window samples for the stationarity check, made on every window that has them: two per half, so that each
 // half has a mean and a spread (stats::halves_trend).

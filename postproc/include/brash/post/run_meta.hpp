@@ -1,5 +1,6 @@
 // meta.json of a run (written by every engine runner; see docs/case_format.md).
 #pragma once
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -34,6 +35,10 @@ struct RunMeta {
   bool culled_far_field = false;  // brash-ode --cull with the window alone (no wake force): spheres outside frozen
   std::optional<EarlyStopMeta> early_stop;
   std::optional<EarlyStopCheckMeta> early_stop_last_check;
+  // meta.json "hull_split": the parallel mid-body bounding the hull force split's regions (x_par_aft_m,
+  // x_par_fwd_m, hull frame), or the engine's words on why it records no split (YADE)
+  std::optional<std::array<double, 2>> hull_split_par_m;
+  std::string hull_split_not_recorded;
   bool in_progress() const { return status == "running"; }
 };
 

@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "brash/case.hpp"
-#include "brash/run/force_record.hpp"  // ForceRow
+#include "brash/run/force_record.hpp"  // ForceRecord
 #include "brash/packing.hpp"
 
 namespace brash::run {
@@ -75,8 +75,9 @@ class Engine {
   virtual std::vector<std::string> restarts(const std::filesystem::path& run_dir) const = 0;
   // Advances the scene from its start (restart empty) or from a restart point to the case's end.
   virtual Attempt advance(const std::filesystem::path& run_dir, const std::string& restart, Monitor& monitor) = 0;
-  // The hull-force record so far, rows with t <= t_max_s, in time order (earlier attempts' rows included).
-  virtual std::vector<ForceRow> force_record(const std::filesystem::path& run_dir, double t_max_s) const = 0;
+  // The hull-force record so far, rows with t <= t_max_s, in time order (earlier attempts' rows included), with
+  // the hull force split (ForceRecord::set_split) when the engine records it for every row.
+  virtual ForceRecord force_record(const std::filesystem::path& run_dir, double t_max_s) const = 0;
   // After the last attempt: completes the run layout (snapshot index, ...).
   virtual void finish(const std::filesystem::path& /*run_dir*/) {}
 };

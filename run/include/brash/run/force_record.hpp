@@ -18,6 +18,14 @@ namespace brash::run {
 // The columns every hull-force record has, in the order they are written.
 inline constexpr std::array<std::string_view, 4> kForceColumns{"t_s", "fx_N", "fy_N", "fz_N"};
 
+// The hull force split (docs/physics.md, "The hull force split"; brash/core/hull_split.hpp): further columns of
+// the record that LIGGGHTS and brash-ode write, in this order. The x component of the force of the ice on the hull
+// by hull region (bow, parallel mid-body, stern: the first three) and by mechanism (the normal and tangential
+// parts of each contact force: the last two); each set adds up to fx_N. A record without them has no split (an
+// older run, YADE, a user's own deck): it is not recorded, never zero.
+inline constexpr std::array<std::string_view, 5> kSplitColumns{"fx_bow_N", "fx_mid_N", "fx_stern_N", "fx_normal_N",
+                                                                "fx_tangential_N"};
+
 // One row of the hull-force record: the force of the ice on the hull, averaged over an output interval.
 struct ForceRow {
   double t_s = 0, fx_N = 0, fy_N = 0, fz_N = 0;
@@ -31,6 +39,13 @@ struct ForceRecord {
   bool tail_dropped = false;               // an unterminated last line was left out (a file still being written)
 
   double extra_value(std::size_t row, std::size_t column) const { return extra[row * extra_columns.size() + column]; }
+  // Whether the record has every column of the split (kSplitColumns); the split's part k of row i is then
+  // extra_value(i, split_column(k)).
+  bool has_split() const;
+  std::size_t split_column(std::size_t k) const;
+  // Sets the split's columns (after any other further columns, none before them); `values` row-major, one
+  // kSplitColumns.size() block per row.
+  void set_split(const std::vector<double>& values);
 };
 
 // The file's text: the header and one line per row.

@@ -20,7 +20,7 @@ namespace brash::ode::restart {
 
 // 2: per-sphere "retired" flag (World::retire); 3: spheres in a spatial order; 4: the push front (wake by
 // push front); 5: the wake counts
-constexpr std::uint32_t kVersion = 5;
+constexpr std::uint32_t kVersion = 6;
 
 class Writer {
  public:

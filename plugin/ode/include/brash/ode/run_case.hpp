@@ -76,7 +76,7 @@ class OdeEngine final : public run::Engine {
   void write_scene(const std::filesystem::path&, bool) override {}  // the scene lives in this process
   std::vector<std::string> restarts(const std::filesystem::path& run_dir) const override;
   run::Attempt advance(const std::filesystem::path& run_dir, const std::string& restart, run::Monitor& m) override;
-  std::vector<run::ForceRow> force_record(const std::filesystem::path& run_dir, double t_max_s) const override;
+  run::ForceRecord force_record(const std::filesystem::path& run_dir, double t_max_s) const override;
   const RunSummary& summary() const { return summary_; }
 
   struct Scene;  // what load() reads: the case, spheres, hull mesh, guards, hull flow
@@ -84,7 +84,7 @@ class OdeEngine final : public run::Engine {
  private:
   RunOptions options_;
   std::unique_ptr<Scene> scene_;
-  std::vector<run::ForceRow> rows_;  // the record so far (as written: the early stop reads what a replay reads)
+  run::ForceRecord record_;  // the record so far (as written: the early stop reads what a replay reads)
   RunSummary summary_;
 };
 

@@ -39,6 +39,7 @@
 #include "brash/core/far_field.hpp"
 #include "brash/core/fluid.hpp"
 #include "brash/core/hull_flow.hpp"
+#include "brash/core/hull_split.hpp"
 
 namespace brash::ode {
 
@@ -203,6 +204,11 @@ class World {
   // Force of the ice on the hull during the last step (contacts only), and its number of contacts.
   const Vec3& hull_force() const { return hull_force_N_; }
   std::size_t hull_contacts() const { return hull_contacts_; }
+  // The hull force split of the last step (brash/core/hull_split.hpp): hull_force().x() by region and by
+  // mechanism, from each hull contact's force (its joint's feedback), point and normal. The regions are in the
+  // hull's frame (the STL's: x = hull_position().x() + x_STL), set once with set_hull_regions.
+  void set_hull_regions(const core::HullRegions& r) { hull_regions_ = r; }
+  const core::HullSplit& hull_split() const { return hull_split_; }
   double bow_x() const { return hull_position().x() + hull_max_[0]; }    // the hull's foremost x now
   double stern_x() const { return hull_position().x() + hull_min_[0]; }  // the hull's aftmost x now
   double hull_half_beam() const { return std::max(std::abs(hull_min_[1]), std::abs(hull_max_[1])); }
@@ -261,6 +267,14 @@ class World {
   std::vector<dTriIndex> hull_triangles_;
   std::array<double, 3> hull_min_{0, 0, 0}, hull_max_{0, 0, 0};
   std::deque<dJointFeedback> hull_feedback_;
+  // per hull joint, in hull_feedback_'s order: the contact point's x in the hull's frame and the contact normal
+  struct HullContact {
+    double x_hull_m;
+    double normal[3];
+  };
+  std::vector<HullContact> hull_contact_;
+  core::HullRegions hull_regions_;
+  core::HullSplit hull_split_{};
   // Wake rule: the feedback of this step's joints between an active sphere and a culled one (by force), the
   // culled sphere of each and the active sphere's velocity before the step (by neighbour speed); after a wake,
   // the culled geoms near the woken spheres go back into collision detection.
