@@ -171,3 +171,43 @@ class LoadRun(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class ResistanceSplitTest(unittest.TestCase):
+    """Run.resistance_split() from report.json; Run.has_split from hull_force.csv's header."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.run_dir = write_run(Path(self.tmp.name))
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_split_parts_and_full_scale(self):
+        rows = ["t_s,fx_N,fy_N,fz_N," + ",".join(brash.SPLIT_COLUMNS)] + [
+            f"{0.1 * i:.1f},{-1.0 * i},0.5,0,{-0.5 * i},{-0.25 * i},{-0.25 * i},{-0.75 * i},{-0.25 * i}"
+            for i in range(1, 5)]
+        (self.run_dir / "hull_force.csv").write_text("\n".join(rows) + "\n")
+        split = {"bow": {"mean": 1.5, "ci95": 0.2}, "mid": {"mean": 0.5, "ci95": 0.1},
+                 "stern": {"mean": 0.5, "ci95": 0.1}, "normal": {"mean": 2.0, "ci95": 0.2},
+                 "tangential": {"mean": 0.5, "ci95": 0.05}, "x_par_m": [1.25, 4.5]}
+        (self.run_dir / "report.json").write_text(
+            json.dumps(dict(REPORT, resistance_split_model_N=split, **{"lambda": 25.0})))
+        run = brash.load_run(self.run_dir)
+        self.assertTrue(run.has_split)
+        self.assertIn("fx_bow_N", run.force.columns)
+        s = run.resistance_split()
+        self.assertEqual(s["bow"].mean_N, 1.5)
+        self.assertAlmostEqual(s["bow"].full_kN, 1.5 * 25.0 ** 3 / 1000)
+        self.assertEqual(s.x_par_m, (1.25, 4.5))
+        self.assertAlmostEqual(sum(s[p].mean_N for p in ("bow", "mid", "stern")), 2.5)
+        self.assertIn("tangential 0.5", str(s))
+
+    def test_no_split_says_why(self):
+        report = dict(REPORT, resistance_split_model_N=None,
+                      resistance_split_not_recorded="not recorded: the YADE scene records the total hull force only")
+        (self.run_dir / "report.json").write_text(json.dumps(report))
+        run = brash.load_run(self.run_dir)
+        self.assertFalse(run.has_split)
+        with self.assertRaisesRegex(brash.RunError, "no hull force split: not recorded: the YADE scene"):
+            run.resistance_split()

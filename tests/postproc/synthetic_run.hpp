@@ -29,6 +29,10 @@ struct SyntheticRun {
   std::string hull_extra_yaml;        // more hull: keys, e.g. "  band_m: [0.15, 0.1]\n"
   double deep_piece_z_m = 0;          // nonzero: piece 0's centre z in the second snapshot
   bool active_column = true;          // particles files with the active column (LIGGGHTS, ODE; every 4th piece idle)
+  // the hull force split's columns (fx_bow_N .. fx_tangential_N): bow 0.6 fx + a, mid 0.3 fx - a, stern 0.1 fx,
+  // normal 0.8 fx + b, tangential the rest (a, b: noise of their own)
+  bool split = false;
+  std::vector<std::vector<double>> split_series;  // written values, one vector per column
   // Written values (read back by the tests).
   std::vector<double> t_s, fx_N, fy_N_series, fz_N_series;
 };
@@ -87,7 +91,9 @@ inline void write_synthetic_run(const std::filesystem::path& dir, SyntheticRun& 
   std::normal_distribution<double> e(0, 1);
   double nx = 0, ny = 0, nz = 0;
   const double s = r.noise_N * std::sqrt(1 - r.phi * r.phi);
-  std::string csv = "t_s,fx_N,fy_N,fz_N\n";
+  std::string csv = r.split ? "t_s,fx_N,fy_N,fz_N,fx_bow_N,fx_mid_N,fx_stern_N,fx_normal_N,fx_tangential_N\n"
+                            : "t_s,fx_N,fy_N,fz_N\n";
+  r.split_series.assign(r.split ? 5 : 0, {});
   const int n = static_cast<int>(std::lround(r.duration_s / r.dt_s));
   for (int i = 0; i <= n; ++i) {
     const double t = i * r.dt_s;
@@ -100,7 +106,16 @@ inline void write_synthetic_run(const std::filesystem::path& dir, SyntheticRun& 
     r.fx_N.push_back(-(r.mean_resistance_N * ramp + r.drift_N_per_s * std::max(0.0, t - 15.0) + nx));
     r.fy_N_series.push_back(r.fy_N * ramp + ny);
     r.fz_N_series.push_back(r.fz_N * ramp + nz);
-    csv += fmt::format("{},{},{},{}\n", t, r.fx_N.back(), r.fy_N_series.back(), r.fz_N_series.back());
+    csv += fmt::format("{},{},{},{}", t, r.fx_N.back(), r.fy_N_series.back(), r.fz_N_series.back());
+    if (r.split) {
+      const double fx = r.fx_N.back(), a = 0.2 * e(rng), b = 0.1 * e(rng);
+      const double parts[5] = {0.6 * fx + a, 0.3 * fx - a, 0.1 * fx, 0.8 * fx + b, 0.2 * fx - b};
+      for (std::size_t k = 0; k < 5; ++k) {
+        r.split_series[k].push_back(parts[k]);
+        csv += fmt::format(",{}", parts[k]);
+      }
+    }
+    csv += "\n";
   }
   if (r.truncated_tail) csv += fmt::format("{},-1.2", (n + 1) * r.dt_s);  // being written
   write_text(dir / "hull_force.csv", csv);

@@ -560,3 +560,53 @@ TEST(RunDir, EarlyStopReplayTable) {
   EXPECT_NE(text2.find("the replay needs a finished run"), std::string::npos) << text2;
   fs::remove_all(dir);
 }
+
+// The hull force split: each part's resistance over the window, as the resistance is averaged, in report.json and a
+// short table in report.md; the regions' bounds from meta.json "hull_split".
+TEST(RunDir, HullForceSplitIsAveragedLikeTheResistance) {
+  const auto dir = scratch("split");
+  SyntheticRun r;
+  r.split = true;
+  r.meta_extra_json = R"(, "hull_split": {"x_par_aft_m": 1.25, "x_par_fwd_m": 4.5})";
+  write_synthetic_run(dir, r);
+  const auto j = run_cli(dir);
+  const auto& S = j["resistance_split_model_N"];
+  ASSERT_TRUE(S.is_object()) << j.dump(2);
+  double regions = 0, mechanisms = 0;
+  for (std::size_t k = 0; k < kSplitParts.size(); ++k) {
+    const double mean = -brash::post::testing::window_mean(r.t_s, r.split_series[k], 15.0, 40.0);
+    EXPECT_NEAR(S[kSplitParts[k]]["mean"].get<double>(), mean, 1e-9) << kSplitParts[k];
+    EXPECT_GT(S[kSplitParts[k]]["ci95"].get<double>(), 0) << kSplitParts[k];
+    (k < 3 ? regions : mechanisms) += S[kSplitParts[k]]["mean"].get<double>();
+  }
+  const double resistance = j["resistance_model_N"]["mean"].get<double>();
+  EXPECT_NEAR(regions, resistance, 1e-9);
+  EXPECT_NEAR(mechanisms, resistance, 1e-9);
+  EXPECT_NEAR(S["x_par_m"][1].get<double>(), 4.5, 1e-12);
+  EXPECT_FALSE(j.contains("resistance_split_not_recorded"));
+  const std::string md = brash::post::read_text_file(dir / "report.md");
+  EXPECT_NE(md.find("## Where the resistance comes from (hull force split)"), std::string::npos) << md;
+  EXPECT_NE(md.find("| bow (x > 4.500 m, ahead of the parallel mid-body) | "), std::string::npos) << md;
+  EXPECT_NE(md.find("| tangential (friction) | "), std::string::npos) << md;
+}
+
+// A record without the split (an older run, YADE) has none, said in words: never a part of 0.
+TEST(RunDir, RecordWithoutTheSplitSaysItIsNotRecorded) {
+  const auto dir = scratch("nosplit");
+  SyntheticRun r;
+  write_synthetic_run(dir, r);
+  auto j = run_cli(dir);
+  EXPECT_TRUE(j["resistance_split_model_N"].is_null());
+  EXPECT_NE(j["resistance_split_not_recorded"].get<std::string>().find("no split columns"), std::string::npos);
+  std::string md = brash::post::read_text_file(dir / "report.md");
+  EXPECT_NE(md.find("The hull force split is not recorded: hull_force.csv has no split columns"), std::string::npos)
+      << md;
+  EXPECT_EQ(md.find("| bow"), std::string::npos);
+  // the engine's own words (YADE's meta.json)
+  r.meta_extra_json = R"(, "hull_split": "not recorded: the YADE scene records the total hull force only")";
+  write_synthetic_run(dir, r);
+  j = run_cli(dir);
+  EXPECT_EQ(j["resistance_split_not_recorded"], "not recorded: the YADE scene records the total hull force only");
+  md = brash::post::read_text_file(dir / "report.md");
+  EXPECT_NE(md.find("The hull force split is not recorded: the YADE scene records"), std::string::npos) << md;
+}
