@@ -152,13 +152,17 @@ fs::path plot_ice_views(const Snapshot& s, const SnapshotEntry& e, const PostCas
   std::vector<std::size_t> idx;
   for (std::size_t i = 0; i < s.size(); ++i)
     if (s.x[i] >= x0 && s.x[i] <= x1) idx.push_back(i);
+  // a snapshot without velocities (an own deck's dump without vx vy vz): the top view shows the height instead
+  const bool speeds = std::none_of(idx.begin(), idx.end(), [&](std::size_t i) { return std::isnan(s.vx[i]); });
   const auto write_sorted = [&](const fs::path& p, bool top) {
     auto order = idx;
     // Top view: the highest particle is what one sees, so it is drawn last; bottom view: the lowest.
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return top ? s.z[a] < s.z[b] : s.z[a] > s.z[b]; });
     std::string d = "# x_m y_m radius_m value\n";
     for (const auto i : order) {
-      const double v = top ? std::sqrt(s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]) : s.submerged_fraction[i];
+      const double v = !top   ? s.submerged_fraction[i]
+                       : speeds ? std::sqrt(s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i])
+                                : s.z[i];
       d += fmt::format("{} {} {} {}\n", s.x[i], s.y[i], s.radius[i], v);
     }
     brash::run::write_atomic(p, d);
@@ -176,16 +180,17 @@ fs::path plot_ice_views(const Snapshot& s, const SnapshotEntry& e, const PostCas
                                          x0, x1, -hw, hw, hull);
   const std::string body = fmt::format(R"(set multiplot layout 2,1 title 't = {:.2f} s: ice around the hull ({} particles shown)'
 {}
-set title 'top view, coloured by speed |v| [m/s]'
+set title 'top view, coloured by {}'
 set palette rgbformulae 22,13,-31
-set cbrange [0:*]
+set cbrange [{}:*]
 plot {} using 1:2:3:4 with circles lc palette fs solid 1.0 noborder notitle
 set title 'bottom view (from below, same axes), coloured by submerged fraction [-]'
 set palette defined (0 '#f7fbff', 0.5 '#6baed6', 1 '#08306b')
 set cbrange [0:1]
 plot {} using 1:2:3:4 with circles lc palette fs solid 1.0 noborder notitle
 unset multiplot
-)", e.t_s, idx.size(), common, q(top), q(bottom));
+)", e.t_s, idx.size(), common, speeds ? "speed |v| [m/s]" : "height z [m] (the snapshot has no velocities)",
+                                       speeds ? "0" : "", q(top), q(bottom));
   // Height follows the channel's aspect ratio so the two panels are not mostly margin.
   const int panel_px = std::clamp(static_cast<int>(1200.0 * 2 * hw / (x1 - x0)), 150, 700);
   return render(out_dir / fmt::format("ice_views_{:06.2f}s.png", e.t_s), work_dir, fmt::format("ice_views_{}", e.step), body,
