@@ -166,10 +166,15 @@ int run_report(const fs::path& run_dir, const ReportOptions& opt) {
       auto times = opt.snapshot_times_s;
       if (times.empty()) times = {a.window.used_s[0], 0.5 * (a.window.used_s[0] + a.window.used_s[1]), a.window.used_s[1]};
       std::vector<fs::path> pngs;
+      const auto waterline = entries.empty() ? std::vector<std::array<double, 2>>{}
+                                             : hull_waterline(a.case_.hull_file, a.case_.draft_m);
+      if (!entries.empty() && waterline.empty())
+        a.notes.push_back(fmt::format("ice views: the hull mesh {} could not be read: the hull is drawn as its Lpp x B "
+                                      "rectangle", a.case_.hull_file.string()));
       for (const auto i : nearest_snapshots(entries, times)) {
         const auto& e = entries[i];
         if (!fs::exists(e.file)) continue;
-        pngs.push_back(plot_ice_views(read_snapshot(e, a.meta.in_progress()), e, a.case_, run_dir, work));
+        pngs.push_back(plot_ice_views(read_snapshot(e, a.meta.in_progress()), e, a.case_, run_dir, work, waterline));
       }
       if (entries.empty())
         a.notes.push_back("no particle snapshots (no particles/index.csv, no LIGGGHTS dump custom file): no ice views");

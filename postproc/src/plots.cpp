@@ -2,6 +2,7 @@
 #include <brash/post/plots.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <numeric>
@@ -13,6 +14,9 @@
 
 #include <brash/run/run_layout.hpp>
 #include <brash/post/csv.hpp>
+#ifdef BRASH_POST_HAVE_HULL
+#include <brash/hull/flow.hpp>
+#endif
 
 namespace brash::post {
 namespace fs = std::filesystem;
@@ -144,8 +148,34 @@ plot {} using 1:3:5:xtic(2) with boxes lc palette, \
   return render(out_dir / "resistance_full_scale.png", work_dir, "resistance_bars", body, 900, 600);
 }
 
+std::vector<std::array<double, 2>> hull_waterline(const fs::path& hull_file, double draft_m) {
+  std::vector<std::array<double, 2>> outline;
+#ifdef BRASH_POST_HAVE_HULL
+  try {
+    const auto mesh = brash::hull::read_mesh(hull_file);
+    double x0 = mesh.vertices.front().x(), x1 = x0;
+    for (const auto& v : mesh.vertices) x0 = std::min(x0, v.x()), x1 = std::max(x1, v.x());
+    constexpr int kStations = 241;
+    std::vector<double> xs(kStations);
+    for (int i = 0; i < kStations; ++i) xs[i] = x0 + (x1 - x0) * i / (kStations - 1.0);
+    const double z[] = {draft_m};
+    const auto half = brash::hull::half_breadths(mesh, xs, z);
+    for (int i = 0; i < kStations; ++i)
+      if (half[i] > 0) outline.push_back({xs[i], -half[i]});
+    for (int i = kStations - 1; i >= 0; --i)
+      if (half[i] > 0) outline.push_back({xs[i], half[i]});
+    if (!outline.empty()) outline.push_back(outline.front());
+  } catch (const std::exception&) {
+    outline.clear();  // no mesh: the caller draws the rectangle and says so
+  }
+#else
+  (void)hull_file, (void)draft_m;
+#endif
+  return outline;
+}
+
 fs::path plot_ice_views(const Snapshot& s, const SnapshotEntry& e, const PostCase& c, const fs::path& out_dir,
-                        const fs::path& work_dir) {
+                        const fs::path& work_dir, const std::vector<std::array<double, 2>>& waterline) {
   fs::create_directories(work_dir);
   // Region: one hull length behind the stern to half a length ahead of the bow.
   const double x0 = e.hull_x_m - 0.5 * c.lpp_m, x1 = e.hull_x_m + 1.5 * c.lpp_m;
@@ -172,10 +202,19 @@ fs::path plot_ice_views(const Snapshot& s, const SnapshotEntry& e, const PostCas
   write_sorted(top, true);
   write_sorted(bottom, false);
   const double hw = c.channel_width_m > 0 ? c.channel_width_m / 2 : 1.5 * c.beam_m;
-  const std::string hull = fmt::format(
-      "set object 1 rect from {},{} to {},{} front fs empty border lc rgb 'black' dt 2 lw 1.5\n"
-      "set label 1 'hull Lpp x B' at {},{} front\n",
-      e.hull_x_m, -c.beam_m / 2, e.hull_x_m + c.lpp_m, c.beam_m / 2, e.hull_x_m + 0.02 * c.lpp_m, c.beam_m / 2 + 0.05 * hw);
+  std::string hull;
+  if (waterline.empty()) {
+    hull = fmt::format("set object 1 rect from {},{} to {},{} front fs empty border lc rgb 'black' dt 2 lw 1.5\n"
+                       "set label 1 'hull Lpp x B (no hull mesh read)' at {},{} front\n",
+                       e.hull_x_m, -c.beam_m / 2, e.hull_x_m + c.lpp_m, c.beam_m / 2, e.hull_x_m + 0.02 * c.lpp_m,
+                       c.beam_m / 2 + 0.05 * hw);
+  } else {  // the waterline drawn where the engine had the hull at this snapshot (mesh x + hull position)
+    hull = "set object 1 polygon from ";
+    for (std::size_t i = 0; i < waterline.size(); ++i)
+      hull += fmt::format("{}{},{}", i ? " to " : "", waterline[i][0] + e.hull_x_m, waterline[i][1]);
+    hull += fmt::format(" front fs empty border lc rgb 'black' lw 1.5\nset label 1 'hull waterline' at {},{} front\n",
+                        e.hull_x_m + 0.02 * c.lpp_m, c.beam_m / 2 + 0.05 * hw);
+  }
   const std::string common = fmt::format("set xrange [{}:{}]\nset yrange [{}:{}]\nset size ratio -1\nset xlabel 'x [m] (heading)'\nset ylabel 'y [m]'\n{}",
                                          x0, x1, -hw, hw, hull);
   const std::string body = fmt::format(R"(set multiplot layout 2,1 title 't = {:.2f} s: ice around the hull ({} particles shown)'

@@ -102,6 +102,8 @@ TEST(Examples, ChannelRunsAndBrashPostReportsItsResistance) {
   EXPECT_TRUE(fs::exists(dir / "ice_views_001.00s.png") || fs::exists(dir / "ice_views_001.50s.png"))
       << brash::test::read_text(dir / "post.txt");
   EXPECT_TRUE(fs::exists(dir / "ice_views_002.50s.png")) << brash::test::read_text(dir / "post.txt");
+  EXPECT_NE(brash::test::read_text(dir / "post/ice_views_50000.gp").find("polygon"), std::string::npos)
+      << "the hull's waterline from hull_barge.stl";
   EXPECT_NE(brash::test::read_text(dir / "report.md").find("LIGGGHTS dump custom file(s)"), std::string::npos);
 
   std::ofstream(dir / "meta.json") << R"({"engine": "liggghts", "status": "complete"})";
