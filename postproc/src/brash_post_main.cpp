@@ -18,6 +18,7 @@
 #include <brash/stats/paired.hpp>
 #include <brash/post/ensemble.hpp>
 #include <brash/post/fsicr.hpp>
+#include <brash/post/native_dump.hpp>
 #include <brash/post/particles.hpp>
 #include <brash/post/plots.hpp>
 #include <brash/post/report.hpp>
@@ -149,7 +150,15 @@ int run_report(const fs::path& run_dir, const ReportOptions& opt) {
   const auto work = run_dir / "post";
   std::vector<std::string> outputs{"report.json", "report.md", "force_history.csv", "blocking.csv"};
   bool ok = true;
-  const auto entries = read_snapshot_index(run_dir / "particles", a.meta.in_progress());
+  auto entries = read_snapshot_index(run_dir / "particles", a.meta.in_progress());
+  if (!fs::exists(run_dir / "particles/index.csv")) {  // an own deck's dump custom files, if any
+    entries = native_dump_index(run_dir, {a.case_.timestep_s, a.case_.start_x_m, a.case_.speed_m_s, a.case_.water_level_m});
+    if (!entries.empty())
+      a.notes.push_back(fmt::format(
+          "particle snapshots from {} LIGGGHTS dump custom file(s) ({} ...): times are step x run.timestep_s {} s of "
+          "case.yaml, submerged fractions computed from each sphere's height, added-mass coefficients unknown",
+          entries.size(), fs::relative(entries.front().file, run_dir).string(), a.case_.timestep_s));
+  }
   if (opt.plots) {
     ok &= step(a, outputs, "force history plot", [&] { return std::vector{plot_force_history(a, run_dir, work)}; });
     ok &= step(a, outputs, "resistance bar chart", [&] { return std::vector{plot_resistance_bars(a, run_dir, work)}; });
@@ -157,12 +166,18 @@ int run_report(const fs::path& run_dir, const ReportOptions& opt) {
       auto times = opt.snapshot_times_s;
       if (times.empty()) times = {a.window.used_s[0], 0.5 * (a.window.used_s[0] + a.window.used_s[1]), a.window.used_s[1]};
       std::vector<fs::path> pngs;
+      const auto waterline = entries.empty() ? std::vector<std::array<double, 2>>{}
+                                             : hull_waterline(a.case_.hull_file, a.case_.draft_m);
+      if (!entries.empty() && waterline.empty())
+        a.notes.push_back(fmt::format("ice views: the hull mesh {} could not be read: the hull is drawn as its Lpp x B "
+                                      "rectangle", a.case_.hull_file.string()));
       for (const auto i : nearest_snapshots(entries, times)) {
         const auto& e = entries[i];
         if (!fs::exists(e.file)) continue;
-        pngs.push_back(plot_ice_views(read_snapshot(e.file, a.meta.in_progress()), e, a.case_, run_dir, work));
+        pngs.push_back(plot_ice_views(read_snapshot(e, a.meta.in_progress()), e, a.case_, run_dir, work, waterline));
       }
-      if (entries.empty()) a.notes.push_back("no particle snapshots (particles/index.csv missing or empty): no ice views");
+      if (entries.empty())
+        a.notes.push_back("no particle snapshots (no particles/index.csv, no LIGGGHTS dump custom file): no ice views");
       return pngs;
     });
   }

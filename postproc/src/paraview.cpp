@@ -134,7 +134,7 @@ ParaviewOutput write_paraview(const fs::path& run_dir, const std::vector<Snapsho
       notes.push_back(fmt::format("ParaView: snapshot {} listed in particles/index.csv is missing: skipped", e.file.string()));
       continue;
     }
-    const auto s = read_snapshot(e.file, run_in_progress);
+    const auto s = read_snapshot(e, run_in_progress);
     const auto pname = fmt::format("particles_{}.vtu", e.step);
     write_particles(s, dir / pname);
     parts.emplace_back(e.t_s, "paraview/" + pname);

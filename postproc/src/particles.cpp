@@ -11,6 +11,7 @@
 
 #include <brash/error.hpp>
 #include <brash/post/csv.hpp>
+#include <brash/post/native_dump.hpp>
 
 namespace brash::post {
 
@@ -82,7 +83,7 @@ BandCheck check_contact_band(const std::vector<SnapshotEntry>& entries, double b
   b.band_below_m = band_below_m;
   for (const auto& e : entries) {
     if (!std::filesystem::exists(e.file)) continue;
-    const Snapshot s = read_snapshot(e.file, run_in_progress);
+    const Snapshot s = read_snapshot(e, run_in_progress);
     ++b.snapshots;
     std::size_t below = 0;
     for (std::size_t i = 0; i < s.size(); ++i) {
@@ -93,6 +94,10 @@ BandCheck check_contact_band(const std::vector<SnapshotEntry>& entries, double b
     if (below > b.pieces_below_max) b.pieces_below_max = below, b.pieces_below_t_s = e.t_s;
   }
   return b;
+}
+
+Snapshot read_snapshot(const SnapshotEntry& entry, bool run_in_progress) {
+  return entry.native ? read_native_dump(entry.file, entry.water_level_m) : read_snapshot(entry.file, run_in_progress);
 }
 
 }  // namespace brash::post

@@ -2,6 +2,7 @@
 #include <brash/post/plots.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <numeric>
@@ -13,6 +14,9 @@
 
 #include <brash/run/run_layout.hpp>
 #include <brash/post/csv.hpp>
+#ifdef BRASH_POST_HAVE_HULL
+#include <brash/hull/flow.hpp>
+#endif
 
 namespace brash::post {
 namespace fs = std::filesystem;
@@ -144,21 +148,51 @@ plot {} using 1:3:5:xtic(2) with boxes lc palette, \
   return render(out_dir / "resistance_full_scale.png", work_dir, "resistance_bars", body, 900, 600);
 }
 
+std::vector<std::array<double, 2>> hull_waterline(const fs::path& hull_file, double draft_m) {
+  std::vector<std::array<double, 2>> outline;
+#ifdef BRASH_POST_HAVE_HULL
+  try {
+    const auto mesh = brash::hull::read_mesh(hull_file);
+    double x0 = mesh.vertices.front().x(), x1 = x0;
+    for (const auto& v : mesh.vertices) x0 = std::min(x0, v.x()), x1 = std::max(x1, v.x());
+    constexpr int kStations = 241;
+    std::vector<double> xs(kStations);
+    for (int i = 0; i < kStations; ++i) xs[i] = x0 + (x1 - x0) * i / (kStations - 1.0);
+    const double z[] = {draft_m};
+    const auto half = brash::hull::half_breadths(mesh, xs, z);
+    for (int i = 0; i < kStations; ++i)
+      if (half[i] > 0) outline.push_back({xs[i], -half[i]});
+    for (int i = kStations - 1; i >= 0; --i)
+      if (half[i] > 0) outline.push_back({xs[i], half[i]});
+    if (!outline.empty()) outline.push_back(outline.front());
+  } catch (const std::exception&) {
+    outline.clear();  // no mesh: the caller draws the rectangle and says so
+  }
+#else
+  (void)hull_file, (void)draft_m;
+#endif
+  return outline;
+}
+
 fs::path plot_ice_views(const Snapshot& s, const SnapshotEntry& e, const PostCase& c, const fs::path& out_dir,
-                        const fs::path& work_dir) {
+                        const fs::path& work_dir, const std::vector<std::array<double, 2>>& waterline) {
   fs::create_directories(work_dir);
   // Region: one hull length behind the stern to half a length ahead of the bow.
   const double x0 = e.hull_x_m - 0.5 * c.lpp_m, x1 = e.hull_x_m + 1.5 * c.lpp_m;
   std::vector<std::size_t> idx;
   for (std::size_t i = 0; i < s.size(); ++i)
     if (s.x[i] >= x0 && s.x[i] <= x1) idx.push_back(i);
+  // a snapshot without velocities (an own deck's dump without vx vy vz): the top view shows the height instead
+  const bool speeds = std::none_of(idx.begin(), idx.end(), [&](std::size_t i) { return std::isnan(s.vx[i]); });
   const auto write_sorted = [&](const fs::path& p, bool top) {
     auto order = idx;
     // Top view: the highest particle is what one sees, so it is drawn last; bottom view: the lowest.
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return top ? s.z[a] < s.z[b] : s.z[a] > s.z[b]; });
     std::string d = "# x_m y_m radius_m value\n";
     for (const auto i : order) {
-      const double v = top ? std::sqrt(s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]) : s.submerged_fraction[i];
+      const double v = !top   ? s.submerged_fraction[i]
+                       : speeds ? std::sqrt(s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i])
+                                : s.z[i];
       d += fmt::format("{} {} {} {}\n", s.x[i], s.y[i], s.radius[i], v);
     }
     brash::run::write_atomic(p, d);
@@ -168,24 +202,34 @@ fs::path plot_ice_views(const Snapshot& s, const SnapshotEntry& e, const PostCas
   write_sorted(top, true);
   write_sorted(bottom, false);
   const double hw = c.channel_width_m > 0 ? c.channel_width_m / 2 : 1.5 * c.beam_m;
-  const std::string hull = fmt::format(
-      "set object 1 rect from {},{} to {},{} front fs empty border lc rgb 'black' dt 2 lw 1.5\n"
-      "set label 1 'hull Lpp x B' at {},{} front\n",
-      e.hull_x_m, -c.beam_m / 2, e.hull_x_m + c.lpp_m, c.beam_m / 2, e.hull_x_m + 0.02 * c.lpp_m, c.beam_m / 2 + 0.05 * hw);
+  std::string hull;
+  if (waterline.empty()) {
+    hull = fmt::format("set object 1 rect from {},{} to {},{} front fs empty border lc rgb 'black' dt 2 lw 1.5\n"
+                       "set label 1 'hull Lpp x B (no hull mesh read)' at {},{} front\n",
+                       e.hull_x_m, -c.beam_m / 2, e.hull_x_m + c.lpp_m, c.beam_m / 2, e.hull_x_m + 0.02 * c.lpp_m,
+                       c.beam_m / 2 + 0.05 * hw);
+  } else {  // the waterline drawn where the engine had the hull at this snapshot (mesh x + hull position)
+    hull = "set object 1 polygon from ";
+    for (std::size_t i = 0; i < waterline.size(); ++i)
+      hull += fmt::format("{}{},{}", i ? " to " : "", waterline[i][0] + e.hull_x_m, waterline[i][1]);
+    hull += fmt::format(" front fs empty border lc rgb 'black' lw 1.5\nset label 1 'hull waterline' at {},{} front\n",
+                        e.hull_x_m + 0.02 * c.lpp_m, c.beam_m / 2 + 0.05 * hw);
+  }
   const std::string common = fmt::format("set xrange [{}:{}]\nset yrange [{}:{}]\nset size ratio -1\nset xlabel 'x [m] (heading)'\nset ylabel 'y [m]'\n{}",
                                          x0, x1, -hw, hw, hull);
   const std::string body = fmt::format(R"(set multiplot layout 2,1 title 't = {:.2f} s: ice around the hull ({} particles shown)'
 {}
-set title 'top view, coloured by speed |v| [m/s]'
+set title 'top view, coloured by {}'
 set palette rgbformulae 22,13,-31
-set cbrange [0:*]
+set cbrange [{}:*]
 plot {} using 1:2:3:4 with circles lc palette fs solid 1.0 noborder notitle
 set title 'bottom view (from below, same axes), coloured by submerged fraction [-]'
 set palette defined (0 '#f7fbff', 0.5 '#6baed6', 1 '#08306b')
 set cbrange [0:1]
 plot {} using 1:2:3:4 with circles lc palette fs solid 1.0 noborder notitle
 unset multiplot
-)", e.t_s, idx.size(), common, q(top), q(bottom));
+)", e.t_s, idx.size(), common, speeds ? "speed |v| [m/s]" : "height z [m] (the snapshot has no velocities)",
+                                       speeds ? "0" : "", q(top), q(bottom));
   // Height follows the channel's aspect ratio so the two panels are not mostly margin.
   const int panel_px = std::clamp(static_cast<int>(1200.0 * 2 * hw / (x1 - x0)), 150, 700);
   return render(out_dir / fmt::format("ice_views_{:06.2f}s.png", e.t_s), work_dir, fmt::format("ice_views_{}", e.step), body,

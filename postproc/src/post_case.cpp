@@ -20,6 +20,7 @@ PostCase read_post_case(const std::filesystem::path& case_yaml) {
   p.ice_class = std::string(brash::to_string(c.ship.ice_class));
   p.fluid_model = std::string(brash::to_string(c.fluid.model));
   p.duration_s = c.run.duration_s;
+  p.timestep_s = c.run.timestep_s;
   p.window_s = c.run.window_s;
   p.channel_width_m = c.channel.width_m;
   p.water_level_m = c.water.level_m;

@@ -13,10 +13,15 @@ import pandas as pd
 import yaml
 
 # Every engine writes these two when a run starts; hull_force.csv follows when it ends and report.json
-# after brash-post, so a running or failed run still loads (its .force then says what is missing).
+# after brash-post, so a running or failed run still loads (its .force then says what is missing). A run of an
+# own LIGGGHTS deck has no meta.json: its case.yaml and an output of the deck's (the hull force record
+# hull_force.raw of fix ave/time, dump custom files) make it a run too (docs/case_format.md, "A run from your
+# own input").
 REQUIRED_FILES = ("case.yaml", "meta.json")
 
 FORCE_FILE = "hull_force.csv"
+RAW_FORCE_FILE = "hull_force.raw"   # LIGGGHTS fix ave/time: '#' lines, then rows "TimeStep t fx fy fz"
+DUMP_FIRST_LINE = "ITEM: TIMESTEP"  # LIGGGHTS dump custom, one file per snapshot
 FORCE_COLUMNS = ("t_s", "fx_N", "fy_N", "fz_N")
 # The hull force split (docs/physics.md "The hull force split"): fx by hull region, then by mechanism; each set
 # adds up to fx_N. Written by LIGGGHTS and brash-ode; a record without them has no split (never zero).
@@ -110,12 +115,35 @@ class Run:
             raise NotARunError(f"{self.path}: not a folder (a run directory is a folder, docs/case_format.md)")
         for name in REQUIRED_FILES:
             if not (self.path / name).is_file():
+                if name == "meta.json" and self._has_deck_output():
+                    continue  # an own deck's run: engine and status unknown
                 hint = ""
                 if name == "meta.json" and (self.path / "case.yaml").is_file():
                     hint = " (a case folder? run it with an engine first: brash-ode / brash-liggghts-run)"
                 raise NotARunError(f"{self.path} is not a run directory: {self.path / name} is missing{hint}")
-        self.meta: dict = self._read_json("meta.json")
+        self.meta: dict = self._read_json("meta.json") if (self.path / "meta.json").is_file() else {}
         self.case: dict = self._read_yaml("case.yaml")
+
+    def _has_deck_output(self) -> bool:
+        """A hull force record or a dump custom file of an own deck beside its case.yaml."""
+        return any((self.path / f).is_file() for f in (FORCE_FILE, RAW_FORCE_FILE)) or bool(self._native_dumps())
+
+    def _native_dumps(self) -> list[Path]:
+        """The folder's LIGGGHTS dump custom files (brash's own outputs and restart files left out)."""
+        skip = {"particles", "paraview", "post", "restart"}
+        found = []
+        for f in sorted(self.path.rglob("*")):
+            rel = f.relative_to(self.path)
+            if len(rel.parts) > 1 and rel.parts[0] in skip or not f.is_file():
+                continue
+            try:
+                with open(f, encoding="utf-8") as fh:
+                    first = fh.readline().rstrip("\r\n")
+            except (UnicodeDecodeError, OSError):
+                continue
+            if first == DUMP_FIRST_LINE:
+                found.append(f)
+        return found
 
     def __repr__(self) -> str:
         return (f"<brash run {self.path} engine={self.meta.get('engine')!r} "
@@ -160,8 +188,8 @@ class Run:
 
     @property
     def status(self) -> str | None:
-        """meta.json's status: running, complete or failed."""
-        return self.meta.get("status")
+        """meta.json's status: running, complete or failed; "unknown" for a run without meta.json."""
+        return self.meta.get("status", "unknown" if not self.meta else None)
 
     @property
     def name(self) -> str:
@@ -170,9 +198,13 @@ class Run:
     # ---- hull force --------------------------------------------------------------------------------
     @cached_property
     def force(self) -> pd.DataFrame:
-        """hull_force.csv: t_s, fx_N, fy_N, fz_N (force of the ice on the hull) plus resistance_N = -fx_N."""
-        df = self._read_csv(FORCE_FILE, FORCE_COLUMNS,
-                            "the engine writes it when the run ends: a running or killed run has none yet")
+        """hull_force.csv (or an own deck's hull_force.raw): t_s, fx_N, fy_N, fz_N (force of the ice on the hull)
+        plus resistance_N = -fx_N."""
+        if not (self.path / FORCE_FILE).is_file() and (self.path / RAW_FORCE_FILE).is_file():
+            df = self._read_raw_force()
+        else:
+            df = self._read_csv(FORCE_FILE, FORCE_COLUMNS,
+                                "the engine writes it when the run ends: a running or killed run has none yet")
         for c in FORCE_COLUMNS:
             if not pd.api.types.is_numeric_dtype(df[c]):
                 raise RunError(f"{self.path / FORCE_FILE}: column {c} is not numeric")
@@ -193,11 +225,40 @@ class Run:
             header = f.readline().strip().split(",")
         return all(c in header for c in SPLIT_COLUMNS)
 
+    def _read_raw_force(self) -> pd.DataFrame:
+        file = self.path / RAW_FORCE_FILE
+        try:
+            df = pd.read_csv(file, comment="#", sep=r"\s+", header=None)
+        except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError) as e:
+            raise RunError(f"{file}: not a readable fix ave/time record ({e})") from e
+        if df.shape[1] != 5:
+            raise RunError(f"{file}: {df.shape[1]} columns, expected 5 (TimeStep t fx fy fz of fix ave/time)")
+        df = df.iloc[:, 1:]
+        df.columns = list(FORCE_COLUMNS)
+        return df
+
     # ---- particle snapshots ------------------------------------------------------------------------
     @cached_property
     def snapshots(self) -> pd.DataFrame:
-        """particles/index.csv: step, t_s, file, hull_x_m (one row per snapshot, in time order)."""
-        return self._read_csv(INDEX_FILE, INDEX_COLUMNS, "the index of the particle snapshots")
+        """particles/index.csv: step, t_s, file, hull_x_m (one row per snapshot, in time order).
+
+        Without it, an own deck's dump custom files, timed as brash-post does: t_s = step x run.timestep_s, the
+        hull at hull.start_x_m + ship.speed_m_s t_s (file: the path relative to the run folder)."""
+        if (self.path / INDEX_FILE).is_file() or not self._native_dumps():
+            return self._read_csv(INDEX_FILE, INDEX_COLUMNS, "the index of the particle snapshots")
+        run, hull, ship = (self.case.get(k) or {} for k in ("run", "hull", "ship"))
+        dt = run.get("timestep_s")
+        if dt is None:
+            raise RunError(f"{self.path / 'case.yaml'}: run.timestep_s is needed to time the dump custom files")
+        rows = []
+        for f in self._native_dumps():
+            with open(f, encoding="utf-8") as fh:
+                fh.readline()
+                step = int(fh.readline())
+            t = step * float(dt)
+            rows.append({"step": step, "t_s": t, "file": str(f.relative_to(self.path)),
+                         "hull_x_m": float(hull.get("start_x_m", 0.0)) + float(ship.get("speed_m_s", 0.0)) * t})
+        return pd.DataFrame(rows, columns=list(INDEX_COLUMNS)).sort_values("step", ignore_index=True)
 
     def snapshot(self, step: int | None = None, *, index: int | None = None) -> pd.DataFrame:
         """One particle snapshot as a DataFrame (id, x, y, z, radius, vx, vy, vz, submerged_fraction, ca_*, and
@@ -221,9 +282,32 @@ class Run:
                 raise RunError(f"{self.path / INDEX_FILE}: snapshot index {index} out of range "
                                f"({len(snaps)} snapshots)")
             row = snaps.iloc[index]
-        df = self._read_csv(Path("particles") / str(row["file"]), ("id", "x", "y", "z", "radius"),
-                            f"listed in {INDEX_FILE} for step {int(row['step'])}")
+        if (self.path / INDEX_FILE).is_file():
+            df = self._read_csv(Path("particles") / str(row["file"]), ("id", "x", "y", "z", "radius"),
+                                f"listed in {INDEX_FILE} for step {int(row['step'])}")
+        else:
+            df = self._read_native_dump(self.path / str(row["file"]))
         df.attrs.update(step=int(row["step"]), t_s=float(row["t_s"]), hull_x_m=float(row["hull_x_m"]))
+        return df
+
+    def _read_native_dump(self, file: Path) -> pd.DataFrame:
+        """One dump custom file: its columns (radius from diameter where only that is given) plus the submerged
+        fraction of each sphere below water.level_m."""
+        lines = file.read_text(encoding="utf-8").splitlines()
+        head = next((i for i, line in enumerate(lines) if line.startswith("ITEM: ATOMS")), None)
+        if head is None:
+            raise RunError(f"{file}: no ITEM: ATOMS line (not a LIGGGHTS dump custom file)")
+        names = lines[head].split()[2:]
+        df = pd.read_csv(file, sep=r"\s+", skiprows=head + 1, header=None, names=names)
+        if "radius" not in df.columns and "diameter" in df.columns:
+            df["radius"] = df["diameter"] / 2
+        missing = [c for c in ("id", "x", "y", "z", "radius") if c not in df.columns]
+        if missing:
+            raise RunError(f"{file}: column(s) {', '.join(missing)} missing (ITEM: ATOMS {' '.join(names)})")
+        level = float((self.case.get("water") or {}).get("level_m", 0.0))
+        r = df["radius"]
+        h = (level - (df["z"] - r)).clip(lower=0).clip(upper=2 * r)  # submerged height of the sphere
+        df["submerged_fraction"] = h * h * (3 * r - h) / (4 * r ** 3)
         return df
 
     # ---- brash-post's report -----------------------------------------------------------------------

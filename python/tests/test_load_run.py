@@ -150,6 +150,38 @@ class LoadRun(unittest.TestCase):
         with self.assertRaisesRegex(brash.NotARunError, "not a folder"):
             brash.load_run(self.run_dir / "meta.json")
 
+    def test_own_deck_folder_without_meta(self):
+        """An own LIGGGHTS deck's folder: case.yaml, fix ave/time's hull_force.raw and dump custom files."""
+        deck = self.root / "deck"
+        deck.mkdir()
+        (deck / "case.yaml").write_text("name: deck\nhull:\n  start_x_m: -1.0\nship:\n  speed_m_s: 0.5\n"
+                                        "run:\n  timestep_s: 1.0e-4\n")
+        (deck / "hull_force.raw").write_text("# Time-averaged data for fix hf\n# TimeStep v_t f_hull[1] f_hull[2] "
+                                             "f_hull[3]\n0 0 0 0 0\n100 0.01 -1.5 0.25 2\n")
+
+        def dump(step: int, atoms: str, rows: str) -> str:
+            return (f"ITEM: TIMESTEP\n{step}\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS pp pp ff\n-1 1\n-1 1\n"
+                    f"-1 1\nITEM: ATOMS {atoms}\n{rows}")
+
+        (deck / "ice_2000.liggghts").write_text(dump(2000, "id x y z diameter", "1 0 0 0 0.02\n2 0 0 -0.02 0.02\n"))
+        (deck / "ice_1000.liggghts").write_text(dump(1000, "id x y z radius vx", "1 0 0 0.01 0.01 0.1\n2 0 0 0 0.01 0\n"))
+        run = brash.load_run(deck)
+        self.assertEqual(run.status, "unknown")
+        self.assertEqual(run.force["resistance_N"].tolist(), [0.0, 1.5])
+        self.assertEqual(run.force["t_s"].tolist(), [0.0, 0.01])
+        snaps = run.snapshots
+        self.assertEqual(snaps["step"].tolist(), [1000, 2000])
+        self.assertAlmostEqual(snaps["t_s"].iloc[1], 0.2)
+        self.assertAlmostEqual(snaps["hull_x_m"].iloc[1], -0.9)
+        first = run.snapshot(1000)
+        self.assertEqual(first["vx"].tolist(), [0.1, 0.0])
+        self.assertEqual(first["submerged_fraction"].iloc[0], 0.0)  # resting on the water line
+        self.assertAlmostEqual(first["submerged_fraction"].iloc[1], 0.5)  # centred on it
+        last = run.snapshot(index=-1)
+        self.assertEqual(last["radius"].tolist(), [0.01, 0.01])  # diameter / 2
+        self.assertAlmostEqual(last["submerged_fraction"].iloc[1], 1.0)
+        self.assertAlmostEqual(last.attrs["t_s"], 0.2)
+
     def test_missing_or_bad_force_file(self):
         (self.run_dir / "hull_force.csv").unlink()
         run = brash.load_run(self.run_dir)  # a running run: meta and case still load

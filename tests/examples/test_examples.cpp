@@ -98,6 +98,13 @@ TEST(Examples, ChannelRunsAndBrashPostReportsItsResistance) {
             std::string::npos);
   EXPECT_FALSE(report["complete"].get<bool>()) << "nothing says the run finished";
   EXPECT_NE(brash::test::read_text(dir / "report.md").find("no meta.json"), std::string::npos);
+  // the deck's own dump custom files (every 0.5 s) give the ice views, without brash's particles/ layout
+  EXPECT_TRUE(fs::exists(dir / "ice_views_001.00s.png") || fs::exists(dir / "ice_views_001.50s.png"))
+      << brash::test::read_text(dir / "post.txt");
+  EXPECT_TRUE(fs::exists(dir / "ice_views_002.50s.png")) << brash::test::read_text(dir / "post.txt");
+  EXPECT_NE(brash::test::read_text(dir / "post/ice_views_50000.gp").find("polygon"), std::string::npos)
+      << "the hull's waterline from hull_barge.stl";
+  EXPECT_NE(brash::test::read_text(dir / "report.md").find("LIGGGHTS dump custom file(s)"), std::string::npos);
 
   std::ofstream(dir / "meta.json") << R"({"engine": "liggghts", "status": "complete"})";
   ASSERT_EQ(run_post(dir), 0) << brash::test::read_text(dir / "post.txt");

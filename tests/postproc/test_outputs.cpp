@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fmt/format.h>
 #include <fstream>
 
 #include <nlohmann/json.hpp>
@@ -16,6 +17,7 @@
 
 #include <brash/error.hpp>
 #include <brash/post/csv.hpp>
+#include <brash/post/native_dump.hpp>
 #include <brash/post/particles.hpp>
 
 #include "synthetic_run.hpp"
@@ -121,6 +123,58 @@ TEST_F(Outputs, ParticlesReadBackWithVtk) {
   ASSERT_NE(pd->GetArray("active"), nullptr);  // 1 integrated, 0 idle far-field ice (every 4th synthetic piece)
   EXPECT_EQ(pd->GetArray("active")->GetTuple1(7), 1.0);
   EXPECT_EQ(pd->GetArray("active")->GetTuple1(8), 0.0);
+}
+
+// A LIGGGHTS deck's own dump custom files (one per snapshot) are the run's snapshots when it has no particles/:
+// found by their first line, ordered by step, timed by the case's step; diameter read as 2 radius; the
+// submerged fraction from the sphere's height (half a sphere centred on the water line: 0.5); no velocities
+// and no C_a in the dump: NaN, not zero. A second TIMESTEP in a file and a missing column are refused by name.
+TEST(Particles, NativeDumpCustomFilesAreSnapshots) {
+  const auto dir = scratch("native");
+  fs::create_directories(dir / "dump");
+  const auto dump = [](long step, const std::string& atoms) {
+    return fmt::format("ITEM: TIMESTEP\n{}\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS pp pp ff\n-1 1\n-1 1\n-1 1\n"
+                       "ITEM: ATOMS {}\n", step, atoms);
+  };
+  brash::post::testing::write_text(dir / "dump/ice_2000.liggghts", dump(2000, "id type x y z diameter") +
+                                                                    "7 1 0.5 0.1 0.0 0.02\n8 1 0.6 0.1 -0.02 0.02\n");
+  brash::post::testing::write_text(dir / "ice_1000.liggghts", dump(1000, "id x y z radius vx vy vz") +
+                                                               "7 0.4 0.1 0.01 0.01 0.1 0 0\n8 0.6 0.1 0 0.01 0 0 0\n");
+  brash::post::testing::write_text(dir / "notes.txt", "ITEM: something else\n");
+  const auto entries = brash::post::native_dump_index(dir, {.timestep_s = 1e-4, .hull_start_x_m = -1.0,
+                                                            .speed_m_s = 0.5, .water_level_m = 0.0});
+  ASSERT_EQ(entries.size(), 2u);
+  EXPECT_EQ(entries[0].step, 1000);
+  EXPECT_DOUBLE_EQ(entries[0].t_s, 0.1);
+  EXPECT_DOUBLE_EQ(entries[1].hull_x_m, -1.0 + 0.5 * 0.2);
+  const auto first = brash::post::read_snapshot(entries[0], false);
+  EXPECT_EQ(first.id, (std::vector<std::int64_t>{7, 8}));
+  EXPECT_DOUBLE_EQ(first.vx[0], 0.1);
+  EXPECT_NEAR(first.submerged_fraction[1], 0.5, 1e-12);  // centred on the water line
+  EXPECT_EQ(first.submerged_fraction[0], 0.0);          // resting on it
+  EXPECT_TRUE(std::isnan(first.ca_x[0]));
+  const auto second = brash::post::read_snapshot(entries[1], false);
+  EXPECT_DOUBLE_EQ(second.radius[0], 0.01);  // diameter / 2
+  EXPECT_TRUE(std::isnan(second.vx[0]));      // not in the dump
+  EXPECT_NEAR(second.submerged_fraction[1], 1.0, 1e-12);
+  const auto refused = [&](const std::string& name, const std::string& text) {
+    brash::post::testing::write_text(dir / name, text);
+    try {
+      (void)brash::post::read_native_dump(dir / name, 0.0);
+    } catch (const brash::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(refused("two.liggghts", dump(1, "id x y z radius") + "1 0 0 0 0.01\n2 0 0 0 0.01\n" +
+                                        dump(2, "id x y z radius") + "1 0 0 0 0.01\n2 0 0 0 0.01\n")
+                .find("two.liggghts:12: a second TIMESTEP"),
+            std::string::npos);
+  EXPECT_NE(refused("noradius.liggghts", dump(1, "id x y z") + "1 0 0 0\n2 0 0 0\n").find("neither 'radius' nor"),
+            std::string::npos);
+  EXPECT_NE(refused("short.liggghts", dump(1, "id x y z radius") + "1 0 0 0 0.01\n").find("1 atoms where NUMBER"),
+            std::string::npos);
+  fs::remove_all(dir);
 }
 
 // The particles files of LIGGGHTS and ODE end with the active column, YADE's (and older runs') at ca_z: both are

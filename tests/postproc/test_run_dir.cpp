@@ -13,6 +13,10 @@
 #include <brash/post/csv.hpp>
 #include <brash/post/plots.hpp>
 #include <brash/post/report.hpp>
+#ifdef BRASH_JBC_MODEL_STL
+#include <brash/hull/hydrostatics.hpp>
+#include <brash/hull/mesh.hpp>
+#endif
 
 #include "synthetic_run.hpp"
 
@@ -609,4 +613,25 @@ TEST(RunDir, RecordWithoutTheSplitSaysItIsNotRecorded) {
   EXPECT_EQ(j["resistance_split_not_recorded"], "not recorded: the YADE scene records the total hull force only");
   md = brash::post::read_text_file(dir / "report.md");
   EXPECT_NE(md.find("The hull force split is not recorded: the YADE scene records"), std::string::npos) << md;
+}
+
+// The ice views draw the hull's waterline from its mesh: on the JBC at its design draft the outline is closed,
+// spans the waterline's length and is as wide as its beam (hull::hydrostatics on the same mesh), its bow near
+// the mesh's forward end; an unreadable mesh gives no outline (the views then draw the Lpp x B rectangle).
+TEST(IceViews, HullWaterlineFromTheMesh) {
+#ifdef BRASH_JBC_MODEL_STL
+  if (!fs::exists(BRASH_JBC_MODEL_STL)) GTEST_SKIP() << "JBC model STL not generated";
+  const auto outline = brash::post::hull_waterline(BRASH_JBC_MODEL_STL, 0.4125);
+  ASSERT_GT(outline.size(), 100u);
+  EXPECT_EQ(outline.front(), outline.back());
+  double x0 = 1e9, x1 = -1e9, ymax = 0;
+  for (const auto& p : outline) x0 = std::min(x0, p[0]), x1 = std::max(x1, p[0]), ymax = std::max(ymax, std::abs(p[1]));
+  const auto h = brash::hull::hydrostatics(brash::hull::read_mesh(BRASH_JBC_MODEL_STL), 0.4125, 7.0);
+  const double station = 7.5 / 240;  // the stations' spacing (the mesh is ~7.3 m long)
+  EXPECT_NEAR(x1 - x0, h.lwl_m, 2 * station);
+  EXPECT_NEAR(2 * ymax, h.bwl_m, 0.01 * h.bwl_m);
+  EXPECT_TRUE(brash::post::hull_waterline("no_such_hull.stl", 0.4).empty());
+#else
+  GTEST_SKIP() << "built without brash_hull";
+#endif
 }

@@ -13,6 +13,8 @@ struct SnapshotEntry {
   double t_s = 0;
   std::filesystem::path file;  // absolute (particles dir / file)
   double hull_x_m = 0;         // x of the hull's aft perpendicular at t_s (channel frame)
+  bool native = false;         // a LIGGGHTS dump custom file (brash/post/native_dump.hpp), not brash's CSV
+  double water_level_m = 0;    // for a native dump: the level its submerged fractions are computed against
 };
 
 struct Snapshot {
@@ -29,6 +31,8 @@ std::vector<SnapshotEntry> read_snapshot_index(const std::filesystem::path& part
 
 // Strict reader; InputError naming file and line.
 Snapshot read_snapshot(const std::filesystem::path& file, bool run_in_progress);
+// The snapshot of an entry, brash's CSV or a native dump.
+Snapshot read_snapshot(const SnapshotEntry& entry, bool run_in_progress);
 
 // Does the ice stay within the hull's contact band (hull.band_m)? Below the band's lower edge the contact hull has
 // no triangles, so a piece pushed deeper beside the hull loses its hull contacts there (the guard only stops a run

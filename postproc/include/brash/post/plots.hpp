@@ -23,10 +23,17 @@ std::filesystem::path plot_force_history(const RunAnalysis& a, const std::filesy
 std::filesystem::path plot_resistance_bars(const RunAnalysis& a, const std::filesystem::path& out_dir,
                                            const std::filesystem::path& work_dir);
 
+// The hull's waterline from its mesh (mesh frame: x forward, keel at z = 0, the water at z = draft_m) as a closed
+// outline: the half-breadth at the waterline at 241 stations over the mesh's length, starboard aft to fore, port
+// fore to aft. Empty when the mesh cannot be read (or brash-post is built without the hull library).
+std::vector<std::array<double, 2>> hull_waterline(const std::filesystem::path& hull_file, double draft_m);
+
 // Fig. 4 analog: top view (coloured by speed, topmost drawn last) and bottom view (coloured by
-// submerged fraction, lowest drawn last) of the ice around the hull at one snapshot.
+// submerged fraction, lowest drawn last) of the ice around the hull at one snapshot, with the hull's waterline
+// (hull_waterline, placed at the snapshot's hull position) or, without one, its Lpp x B rectangle.
 std::filesystem::path plot_ice_views(const Snapshot& s, const SnapshotEntry& e, const PostCase& c,
-                                     const std::filesystem::path& out_dir, const std::filesystem::path& work_dir);
+                                     const std::filesystem::path& out_dir, const std::filesystem::path& work_dir,
+                                     const std::vector<std::array<double, 2>>& waterline = {});
 
 struct CompareRow {
   std::string run, engine, fluid_model;

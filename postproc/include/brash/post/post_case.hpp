@@ -19,7 +19,7 @@ struct PostCase {
   double speed_m_s = 0, scale_lambda = 1;
   std::string ice_class = "IA";
   std::string fluid_model;
-  double duration_s = 0;
+  double duration_s = 0, timestep_s = 0;
   double channel_width_m = 0, water_level_m = 0;
   std::optional<std::array<double, 2>> band_m;  // contact hull: [below, above] the waterline; nullopt = full hull
   std::array<double, 2> window_s{15.0, 40.0};
