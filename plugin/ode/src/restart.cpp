@@ -42,14 +42,16 @@ std::string seal(const std::string& payload) {
   return out;
 }
 
-std::string unseal(const std::string& b, const std::string& name) {
+std::string unseal(const std::string& b, const std::string& name, std::uint32_t* version_out) {
   if (b.size() < kHead + kTail || std::memcmp(b.data(), kMagic, 8) != 0)
     throw std::runtime_error(fmt::format("{}: not a brash-ode restart file or truncated ({} bytes)", name, b.size()));
   Reader r(b);
   r.get<std::uint64_t>();  // magic
   const auto version = r.get<std::uint32_t>();
-  if (version != kVersion)
-    throw std::runtime_error(fmt::format("{}: restart format version {} (this brash-ode reads {})", name, version, kVersion));
+  if (version < kOldestVersion || version > kVersion)
+    throw std::runtime_error(fmt::format("{}: restart format version {} (this brash-ode reads {} to {})", name,
+                                         version, kOldestVersion, kVersion));
+  if (version_out) *version_out = version;
   const auto n = r.get<std::uint64_t>();
   if (b.size() != kHead + n + kTail)
     throw std::runtime_error(
@@ -94,7 +96,7 @@ Found load_latest(const fs::path& dir) {
       std::ifstream in(p, std::ios::binary);
       std::ostringstream ss;
       ss << in.rdbuf();
-      f.payload = unseal(ss.str(), p.string());
+      f.payload = unseal(ss.str(), p.string(), &f.version);
       f.file = p;
       return f;
     } catch (const std::exception& e) {

@@ -364,7 +364,8 @@ void Stepping::restore(run::Attempt& a) {
   stats0_.wall_collide_s = r.get<double>();
   stats0_.wall_step_s = r.get<double>();
   acc_ = r.get_vec3();
-  for (double& v : acc_split_) v = r.get<double>();
+  if (found.version >= 6)  // a version 5 file is from before the split: its record has no split columns either
+    for (double& v : acc_split_) v = r.get<double>();
   win_sum_ = r.get<double>();
   win_n_ = r.get<long>();
   r.get<double>();  // the wall time up to the restart (meta.json keeps the run's)

@@ -19,8 +19,10 @@
 namespace brash::ode::restart {
 
 // 2: per-sphere "retired" flag (World::retire); 3: spheres in a spatial order; 4: the push front (wake by
-// push front); 5: the wake counts
+// push front); 5: the wake counts; 6: the hull force split's sums over the output interval. Version 5 files are
+// read too (a run from before the split resumes without it).
 constexpr std::uint32_t kVersion = 6;
+constexpr std::uint32_t kOldestVersion = 5;
 
 class Writer {
  public:
@@ -77,8 +79,8 @@ class Reader {
 };
 
 std::string seal(const std::string& payload);
-// Returns the payload; throws std::runtime_error naming `name` and the defect.
-std::string unseal(const std::string& file_bytes, const std::string& name);
+// Returns the payload (and its format version in *version); throws std::runtime_error naming `name` and the defect.
+std::string unseal(const std::string& file_bytes, const std::string& name, std::uint32_t* version = nullptr);
 
 // Writes dir/restart_<step>.bin atomically, then deletes all but the newest `keep` restart files.
 std::filesystem::path write(const std::filesystem::path& dir, long step, const std::string& payload, int keep = 2);
@@ -90,6 +92,7 @@ struct Found {
   std::filesystem::path file;
   std::string payload;
   std::vector<std::string> rejected;  // "file: reason" for newer files that could not be used
+  std::uint32_t version = kVersion;   // the file's format version (kOldestVersion .. kVersion)
 };
 // Newest restart file whose seal is intact; throws std::runtime_error if there is none.
 Found load_latest(const std::filesystem::path& dir);
