@@ -72,6 +72,8 @@ while time.time() < deadline and p.poll() is None and not restart_points(cut):
     time.sleep(0.05)
 first = restart_points(cut)
 time.sleep(1.0)  # let it run past the point
+with open(os.path.join(cut, "engine.pid")) as f:  # the engine's pid file exists while it runs
+    engine_pid = int(f.read().split()[0])
 p.send_signal(signal.SIGTERM)
 rc = p.wait(timeout=60)
 need(bool(first), "a restart point appeared before the signal (%s)" % first)
@@ -79,8 +81,7 @@ need(rc == 128 + signal.SIGTERM, "the runner exits 128 + SIGTERM (%d)" % rc)
 m = meta(cut)
 need(m["status"] == "interrupted" and "--resume " + cut in m["reason"], "meta.json: interrupted, resumable (%s)"
      % m["reason"])
-with open(os.path.join(cut, "engine.pid")) as f:
-    engine_pid = int(f.read().split()[0])
+need(not os.path.exists(os.path.join(cut, "engine.pid")), "the ended engine's pid file is gone")
 time.sleep(0.5)
 try:
     os.kill(engine_pid, 0)
