@@ -89,13 +89,14 @@ test ! -e "$tmp/paper/cases"
 
 # an ODE paper run (it takes tens of hours and is archived while it goes on) with a partial record: the record
 # so far is archived (complete rows only), the run is listed with its bins beside the LIGGGHTS run of the same
-# fluid model (here a stand-in at 1.1x the drag stand-in's force), and once its directory is gone it is listed
+# fluid model (here a stand-in at 1.1x the drag stand-in's force, its totals only: a record without the hull
+# force split's columns, as an ODE run started before them has), and once its directory is gone it is listed
 # from the archive as stopped part-way
 o="$tmp/paper/paper-ode-drag-20s"
 mkdir -p "$o"
 sed 's/"engine": "liggghts"/"engine": "ode"/' "$tmp/work/runs/smoke_drag/meta.json" > "$o/meta.json"
 cp "$tmp/work/runs/smoke_drag/case.yaml" "$o/"
-awk -F, 'NR == 1 { print; next } { printf "%s,%.9g,%s,%s\n", $1, 1.1 * $2, $3, $4 }' \
+awk -F, 'NR == 1 { print "t_s,fx_N,fy_N,fz_N"; next } { printf "%s,%.9g,%s,%s\n", $1, 1.1 * $2, $3, $4 }' \
   "$tmp/archive/paper-liggghts-drag-20s/hull_force.csv" > "$o/hull_force.csv"
 printf '9.99,-1.0,0.0,0.' >> "$o/hull_force.csv"  # a row still being written
 study
