@@ -148,6 +148,9 @@ Skips far_field_before_case_keys(const nlohmann::json& j, const Case& c) {
 }
 
 bool same_far_field(const Skips& a, const Skips& b) {
+  // with neither culling nor auto-disable nothing is skipped, and the window's settings are used nowhere
+  const bool a_off = !a.cull && !a.auto_disable, b_off = !b.cull && !b.auto_disable;
+  if (a_off || b_off) return a_off == b_off;
   return a.auto_disable == b.auto_disable && a.disable_linear_m_s == b.disable_linear_m_s &&
          a.disable_angular_rad_s == b.disable_angular_rad_s && a.disable_steps == b.disable_steps &&
          a.auto_disable_far_only == b.auto_disable_far_only && a.cull == b.cull && a.cull_ahead_m == b.cull_ahead_m &&
