@@ -545,4 +545,20 @@ TEST_F(Restart, RunFolderFromBeforeTheOdeKeysResumesWithItsSettingsInItsCase) {
   EXPECT_LE(max_diff(full / "particles" / "particles_200.csv", old / "particles" / "particles_200.csv", 1, 4), 1e-9);
 }
 
+// A run from before the keys with its far field off (no --cull, no auto-disable: the ODE paper run's set-up) skips
+// nothing, so whatever its options say of the window (-1: unset, 20 steps) it migrates and resumes.
+TEST_F(Restart, RunFolderFromBeforeTheOdeKeysWithoutAFarFieldResumes) {
+  const fs::path old = kRoot / "old_no_far_field";
+  ASSERT_EQ(run(base_cmd(old) + " --dt 1e-3 --sphere-order packing --crash-after-step 130"), 137);
+  auto options = ode_options_before_the_keys();
+  options["cull"] = false;
+  for (const char* key : {"cull_ahead_m", "cull_behind_m", "cull_side_m"}) options[key] = -1.0;
+  make_run_from_before_the_keys(old, options);
+  ASSERT_EQ(run(resume_cmd(old)), 0);
+  const auto meta = nlohmann::json::parse(slurp(old / "meta.json"));
+  EXPECT_FALSE(meta.contains("ode_options"));
+  EXPECT_EQ(meta.value("status", std::string()), "complete");
+  EXPECT_NE(slurp(old / "case.yaml").find("\n  farfield: false\n"), std::string::npos);
+}
+
 }  // namespace
