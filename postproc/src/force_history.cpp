@@ -27,14 +27,6 @@ void append_row(ForceHistory& h, const std::filesystem::path& path, std::size_t 
   h.fz_N.push_back(v[3]);
 }
 
-// The whitespace-separated fields of one line.
-std::vector<std::string> split_fields(const std::string& line) {
-  std::istringstream ss(line);
-  std::vector<std::string> fields;
-  for (std::string f; ss >> f;) fields.push_back(f);
-  return fields;
-}
-
 }  // namespace
 
 ForceHistory read_force_history(const std::filesystem::path& path, bool run_in_progress) {
@@ -67,7 +59,7 @@ ForceHistory read_ave_time_force_history(const std::filesystem::path& path, bool
   std::string line;
   for (std::size_t no = 1; std::getline(in, line); ++no) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
-    const auto fields = split_fields(line);
+    const auto fields = whitespace_fields(line);
     if (fields.empty() || fields[0][0] == '#') continue;
     if (run_in_progress && in.eof() && !text.empty() && text.back() != '\n') {
       h.tail_dropped = true;  // the engine is still writing this line

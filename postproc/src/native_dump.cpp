@@ -25,18 +25,6 @@ namespace {
 
 constexpr std::string_view kTimestep = "ITEM: TIMESTEP";
 
-std::vector<std::string_view> words(std::string_view line) {
-  std::vector<std::string_view> out;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
-    const std::size_t start = i;
-    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
-    if (i > start) out.push_back(line.substr(start, i - start));
-  }
-  return out;
-}
-
 // The step of a dump file: the number on the line after "ITEM: TIMESTEP".
 long long dump_step(const fs::path& file) {
   std::ifstream in(file);
@@ -111,7 +99,7 @@ Snapshot read_native_dump(const fs::path& file, double water_level_m) {
         expected = static_cast<std::size_t>(parse_finite(line, file, line_no, "NUMBER OF ATOMS"));
         counted = true;
       } else if (line.rfind("ITEM: ATOMS", 0) == 0) {
-        const auto names = words(std::string_view(line).substr(11));
+        const auto names = whitespace_fields(std::string_view(line).substr(11));
         for (std::size_t i = 0; i < names.size(); ++i) column.emplace(std::string(names[i]), i);
         c_id = col("id"), c_x = col("x"), c_y = col("y"), c_z = col("z"), c_r = col("radius"), c_d = col("diameter");
         c_vx = col("vx"), c_vy = col("vy"), c_vz = col("vz");
@@ -125,7 +113,7 @@ Snapshot read_native_dump(const fs::path& file, double water_level_m) {
       continue;
     }
     if (!atoms) continue;
-    const auto f = words(line);
+    const auto f = whitespace_fields(line);
     if (f.empty()) continue;
     if (f.size() != column.size())
       throw InputError(fmt::format("{}:{}: {} values for the {} columns of ITEM: ATOMS", file.string(), line_no,
