@@ -215,7 +215,9 @@ void write_stl(const fs::path& file, const Mesh& mesh) {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     if (!out) fail(file, "cannot create the output file");
     char header[80] = {};
-    std::snprintf(header, sizeof header, "brash binary STL, metres, %zu triangles", mesh.faces.size());
+    // ended by a line end: LIGGGHTS reads an STL's first line as text (up to the first '\n', quotes paired) to
+    // see that it is not "solid ...", and the binary data after the header may hold an unpaired quote
+    std::snprintf(header, sizeof header, "brash binary STL, metres, %zu triangles\n", mesh.faces.size());
     out.write(header, 80);
     const auto n = static_cast<std::uint32_t>(mesh.faces.size());
     out.write(reinterpret_cast<const char*>(&n), 4);

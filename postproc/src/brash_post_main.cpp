@@ -174,7 +174,7 @@ int run_report(const fs::path& run_dir, const ReportOptions& opt) {
       for (const auto i : nearest_snapshots(entries, times)) {
         const auto& e = entries[i];
         if (!fs::exists(e.file)) continue;
-        pngs.push_back(plot_ice_views(read_snapshot(e, a.meta.in_progress()), e, a.case_, run_dir, work, waterline));
+        pngs.push_back(plot_ice_views(read_snapshot(e, a.meta.in_progress(), Pieces::All), e, a.case_, run_dir, work, waterline));
       }
       if (entries.empty())
         a.notes.push_back("no particle snapshots (no particles/index.csv, no LIGGGHTS dump custom file): no ice views");

@@ -73,6 +73,11 @@ void write_particles(const Snapshot& s, const fs::path& path) {
     for (std::size_t i = 0; i < n; ++i) active->SetValue(static_cast<vtkIdType>(i), s.active[i]);
     g->GetPointData()->AddArray(active);
   }
+  if (!s.state.empty()) {  // the moving window: 0 in the scene, 1 held out, 2 removed (brash/post/particles.hpp)
+    auto state = array("state", 1, n);
+    for (std::size_t i = 0; i < n; ++i) state->SetValue(static_cast<vtkIdType>(i), s.state[i]);
+    g->GetPointData()->AddArray(state);
+  }
   g->GetPointData()->SetActiveScalars("radius");
   write_grid(g, path);
 }
@@ -134,7 +139,7 @@ ParaviewOutput write_paraview(const fs::path& run_dir, const std::vector<Snapsho
       notes.push_back(fmt::format("ParaView: snapshot {} listed in particles/index.csv is missing: skipped", e.file.string()));
       continue;
     }
-    const auto s = read_snapshot(e, run_in_progress);
+    const auto s = read_snapshot(e, run_in_progress, Pieces::All);  // the whole channel, its state in a field
     const auto pname = fmt::format("particles_{}.vtu", e.step);
     write_particles(s, dir / pname);
     parts.emplace_back(e.t_s, "paraview/" + pname);

@@ -37,14 +37,40 @@ std::vector<SnapshotEntry> read_snapshot_index(const std::filesystem::path& dir,
   return out;
 }
 
-Snapshot read_snapshot(const std::filesystem::path& path, bool run_in_progress) {
-  // YADE's files and those of older runs end at ca_z; LIGGGHTS' and ODE's have the active column
-  static constexpr std::array<std::string_view, 13> kHeader{
-      "id", "x", "y", "z", "radius", "vx", "vy", "vz", "submerged_fraction", "ca_x", "ca_y", "ca_z", "active"};
+namespace {
+
+// The snapshot's pieces in the scene only (state kScene); the state column stays, all kScene.
+void keep_scene_pieces(Snapshot& s) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (s.state[i] != kScene) continue;
+    for (auto* c : {&s.x, &s.y, &s.z, &s.radius, &s.vx, &s.vy, &s.vz, &s.submerged_fraction, &s.ca_x, &s.ca_y, &s.ca_z})
+      (*c)[n] = (*c)[i];
+    s.id[n] = s.id[i];
+    s.active[n] = s.active[i];
+    s.state[n] = s.state[i];
+    ++n;
+  }
+  for (auto* c : {&s.x, &s.y, &s.z, &s.radius, &s.vx, &s.vy, &s.vz, &s.submerged_fraction, &s.ca_x, &s.ca_y, &s.ca_z})
+    c->resize(n);
+  s.id.resize(n);
+  s.active.resize(n);
+  s.state.resize(n);
+}
+
+}  // namespace
+
+Snapshot read_snapshot(const std::filesystem::path& path, bool run_in_progress, Pieces pieces) {
+  // YADE's files and those of older runs end at ca_z; LIGGGHTS' and ODE's have the active column, LIGGGHTS' with
+  // the moving window the state column too
+  static constexpr std::array<std::string_view, 14> kHeader{
+      "id", "x", "y", "z", "radius", "vx", "vy", "vz", "submerged_fraction", "ca_x", "ca_y", "ca_z", "active", "state"};
   const auto text = read_text_file(path);
-  const auto first_line = text.substr(0, text.find('\n'));
-  const bool with_active = first_line.ends_with(",active") || first_line.ends_with(",active\r");
-  const auto header = std::span(kHeader).first(with_active ? 13 : 12);
+  auto first_line = std::string_view(text).substr(0, text.find('\n'));
+  if (first_line.ends_with('\r')) first_line.remove_suffix(1);
+  const bool with_state = first_line.ends_with(",active,state");
+  const bool with_active = with_state || first_line.ends_with(",active");
+  const auto header = std::span(kHeader).first(with_state ? 14 : with_active ? 13 : 12);
   Snapshot s;
   std::array<std::vector<double>*, 11> cols{&s.x, &s.y, &s.z, &s.radius, &s.vx, &s.vy, &s.vz,
                                             &s.submerged_fraction, &s.ca_x, &s.ca_y, &s.ca_z};
@@ -60,8 +86,15 @@ Snapshot read_snapshot(const std::filesystem::path& path, bool run_in_progress) 
       throw InputError(fmt::format("{}:{}: column 'active': '{}' is not 0 (idle) or 1 (integrated)", path.string(),
                                    line, f[12]));
     s.active.push_back(static_cast<std::uint8_t>(active));
+    if (!with_state) return;
+    const double state = parse_finite(f[13], path, line, kHeader[13]);
+    if (state != kScene && state != kHeldOut && state != kRemoved)
+      throw InputError(fmt::format("{}:{}: column 'state': '{}' is not 0 (in the scene), 1 (held out) or 2 (removed)",
+                                   path.string(), line, f[13]));
+    s.state.push_back(static_cast<std::uint8_t>(state));
   });
   s.tail_dropped = scan.tail_dropped;
+  if (with_state && pieces == Pieces::Scene) keep_scene_pieces(s);
   return s;
 }
 
@@ -96,8 +129,9 @@ BandCheck check_contact_band(const std::vector<SnapshotEntry>& entries, double b
   return b;
 }
 
-Snapshot read_snapshot(const SnapshotEntry& entry, bool run_in_progress) {
-  return entry.native ? read_native_dump(entry.file, entry.water_level_m) : read_snapshot(entry.file, run_in_progress);
+Snapshot read_snapshot(const SnapshotEntry& entry, bool run_in_progress, Pieces pieces) {
+  return entry.native ? read_native_dump(entry.file, entry.water_level_m)
+                      : read_snapshot(entry.file, run_in_progress, pieces);
 }
 
 }  // namespace brash::post

@@ -179,9 +179,9 @@ fs::path plot_ice_views(const Snapshot& s, const SnapshotEntry& e, const PostCas
   fs::create_directories(work_dir);
   // Region: one hull length behind the stern to half a length ahead of the bow.
   const double x0 = e.hull_x_m - 0.5 * c.lpp_m, x1 = e.hull_x_m + 1.5 * c.lpp_m;
-  std::vector<std::size_t> idx;
+  std::vector<std::size_t> idx, outside;  // the pieces in the scene; those outside it (the moving window's)
   for (std::size_t i = 0; i < s.size(); ++i)
-    if (s.x[i] >= x0 && s.x[i] <= x1) idx.push_back(i);
+    if (s.x[i] >= x0 && s.x[i] <= x1) (s.state.empty() || s.state[i] == kScene ? idx : outside).push_back(i);
   // a snapshot without velocities (an own deck's dump without vx vy vz): the top view shows the height instead
   const bool speeds = std::none_of(idx.begin(), idx.end(), [&](std::size_t i) { return std::isnan(s.vx[i]); });
   const auto write_sorted = [&](const fs::path& p, bool top) {
@@ -201,6 +201,17 @@ fs::path plot_ice_views(const Snapshot& s, const SnapshotEntry& e, const PostCas
   const auto bottom = work_dir / fmt::format("ice_bottom_{}.dat", e.step);
   write_sorted(top, true);
   write_sorted(bottom, false);
+  // the moving window's pieces outside the scene, grey under the scene's: light where held out ahead, dark where
+  // removed (brash/post/particles.hpp)
+  std::string grey_layer;
+  if (!outside.empty()) {
+    const auto grey = work_dir / fmt::format("ice_outside_{}.dat", e.step);
+    std::string d = "# x_m y_m radius_m rgb\n";
+    for (const auto i : outside)
+      d += fmt::format("{} {} {} {}\n", s.x[i], s.y[i], s.radius[i], s.state[i] == kHeldOut ? 0xd9d9d9 : 0x8c8c8c);
+    brash::run::write_atomic(grey, d);
+    grey_layer = fmt::format("{} using 1:2:3:4 with circles lc rgb variable fs solid 1.0 noborder notitle, ", q(grey));
+  }
   const double hw = c.channel_width_m > 0 ? c.channel_width_m / 2 : 1.5 * c.beam_m;
   std::string hull;
   if (waterline.empty()) {
@@ -217,19 +228,23 @@ fs::path plot_ice_views(const Snapshot& s, const SnapshotEntry& e, const PostCas
   }
   const std::string common = fmt::format("set xrange [{}:{}]\nset yrange [{}:{}]\nset size ratio -1\nset xlabel 'x [m] (heading)'\nset ylabel 'y [m]'\n{}",
                                          x0, x1, -hw, hw, hull);
-  const std::string body = fmt::format(R"(set multiplot layout 2,1 title 't = {:.2f} s: ice around the hull ({} particles shown)'
+  const std::string shown =
+      outside.empty() ? fmt::format("{} particles shown", idx.size())
+                      : fmt::format("{} particles in the scene; grey: {} outside it, light held out, dark removed",
+                                    idx.size(), outside.size());
+  const std::string body = fmt::format(R"(set multiplot layout 2,1 title 't = {:.2f} s: ice around the hull ({})'
 {}
 set title 'top view, coloured by {}'
 set palette rgbformulae 22,13,-31
 set cbrange [{}:*]
-plot {} using 1:2:3:4 with circles lc palette fs solid 1.0 noborder notitle
+plot {}{} using 1:2:3:4 with circles lc palette fs solid 1.0 noborder notitle
 set title 'bottom view (from below, same axes), coloured by submerged fraction [-]'
 set palette defined (0 '#f7fbff', 0.5 '#6baed6', 1 '#08306b')
 set cbrange [0:1]
-plot {} using 1:2:3:4 with circles lc palette fs solid 1.0 noborder notitle
+plot {}{} using 1:2:3:4 with circles lc palette fs solid 1.0 noborder notitle
 unset multiplot
-)", e.t_s, idx.size(), common, speeds ? "speed |v| [m/s]" : "height z [m] (the snapshot has no velocities)",
-                                       speeds ? "0" : "", q(top), q(bottom));
+)", e.t_s, shown, common, speeds ? "speed |v| [m/s]" : "height z [m] (the snapshot has no velocities)",
+                                       speeds ? "0" : "", grey_layer, q(top), grey_layer, q(bottom));
   // Height follows the channel's aspect ratio so the two panels are not mostly margin.
   const int panel_px = std::clamp(static_cast<int>(1200.0 * 2 * hw / (x1 - x0)), 150, 700);
   return render(out_dir / fmt::format("ice_views_{:06.2f}s.png", e.t_s), work_dir, fmt::format("ice_views_{}", e.step), body,

@@ -29,6 +29,8 @@ SPLIT_COLUMNS = ("fx_bow_N", "fx_mid_N", "fx_stern_N", "fx_normal_N", "fx_tangen
 SPLIT_PARTS = ("bow", "mid", "stern", "normal", "tangential")
 INDEX_FILE = Path("particles") / "index.csv"
 INDEX_COLUMNS = ("step", "t_s", "file", "hull_x_m")
+# the state column of a moving window's snapshots (docs/case_format.md, particles/)
+PIECE_STATES = {0: "in the scene", 1: "held out", 2: "removed"}
 REPORT_FILE = "report.json"
 
 
@@ -260,12 +262,18 @@ class Run:
                          "hull_x_m": float(hull.get("start_x_m", 0.0)) + float(ship.get("speed_m_s", 0.0)) * t})
         return pd.DataFrame(rows, columns=list(INDEX_COLUMNS)).sort_values("step", ignore_index=True)
 
-    def snapshot(self, step: int | None = None, *, index: int | None = None) -> pd.DataFrame:
+    def snapshot(self, step: int | None = None, *, index: int | None = None,
+                 all_pieces: bool = False) -> pd.DataFrame:
         """One particle snapshot as a DataFrame (id, x, y, z, radius, vx, vy, vz, submerged_fraction, ca_*, and
         active where the engine writes it: 1 integrated, 0 idle far-field ice).
 
         run.snapshot(1200) is the snapshot of step 1200; run.snapshot(index=-1) the last one. The frame's
         attrs hold step, t_s and hull_x_m of that snapshot.
+
+        A run with the moving window (speedups.moving_window) writes every piece of the channel with a state
+        column: 0 in the scene, 1 held out ahead (where the packing has it, at rest), 2 removed (where it was last
+        seen, at rest). The frame holds the pieces in the scene, as brash-post's statistics read them;
+        all_pieces=True gives every piece with its state (a picture of the whole channel).
         """
         if (step is None) == (index is None):
             raise TypeError("snapshot(): give a step or index=..., not both and not neither")
@@ -287,6 +295,13 @@ class Run:
                                 f"listed in {INDEX_FILE} for step {int(row['step'])}")
         else:
             df = self._read_native_dump(self.path / str(row["file"]))
+        if "state" in df.columns:
+            bad = sorted(set(df["state"].tolist()) - set(PIECE_STATES))
+            if bad:
+                raise RunError(f"{self.path / 'particles' / str(row['file'])}: column state: {bad} not among "
+                               f"{', '.join(f'{k} ({v})' for k, v in PIECE_STATES.items())}")
+            if not all_pieces:
+                df = df[df["state"] == 0].reset_index(drop=True)
         df.attrs.update(step=int(row["step"]), t_s=float(row["t_s"]), hull_x_m=float(row["hull_x_m"]))
         return df
 

@@ -93,6 +93,28 @@ class LoadRun(unittest.TestCase):
         self.assertEqual(last["active"].tolist(), [1, 0])
         self.assertNotIn("active", first.columns)
 
+    def test_moving_window_state_column(self):
+        # a run with the moving window writes every piece with its state: 0 in the scene, 1 held out, 2 removed
+        index = self.run_dir / "particles" / "index.csv"
+        index.write_text(index.read_text() + "200,0.8,particles_200.csv,-7.1\n")
+        header = "id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z,active,state\n"
+        (self.run_dir / "particles" / "particles_200.csv").write_text(
+            header + "1,0.1,0,-0.01,0.02,0,0,0,1,0,0,0,0,2\n2,0.25,0,-0.01,0.02,0.1,0,0,1,0.4,0.4,0.8,1,0\n"
+            "3,0.3,0,-0.01,0.02,0,0,0,1,0,0,0,0,1\n")
+        run = brash.load_run(self.run_dir)
+        scene = run.snapshot(200)  # what a statistic reads: the pieces in the scene
+        self.assertEqual(scene["id"].tolist(), [2])
+        self.assertEqual(scene["state"].tolist(), [0])
+        whole = run.snapshot(200, all_pieces=True)  # a picture of the whole channel
+        self.assertEqual(whole["id"].tolist(), [1, 2, 3])
+        self.assertEqual(whole["state"].tolist(), [2, 0, 1])
+        self.assertAlmostEqual(whole["x"].iloc[2], 0.3)
+        # files without the column are read as they are, every piece
+        self.assertEqual(len(run.snapshot(0, all_pieces=False)), 3)
+        (self.run_dir / "particles" / "particles_200.csv").write_text(header + "1,0.1,0,-0.01,0.02,0,0,0,1,0,0,0,0,5\n")
+        with self.assertRaisesRegex(brash.RunError, r"particles_200.csv: column state: \[5\] not among 0 \(in the scene"):
+            brash.load_run(self.run_dir).snapshot(200)
+
     def test_snapshot_errors(self):
         run = brash.load_run(self.run_dir)
         with self.assertRaisesRegex(brash.RunError, r"no snapshot at step 7 \(steps: 0, 100\)"):

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <unistd.h>
 #include <numbers>
@@ -41,6 +42,12 @@ TEST(BoxBarge, StlRoundTripAndBand) {
   const auto file = std::filesystem::temp_directory_path() / ("brash_test_box_" + std::to_string(::getpid()) + ".stl");
   write_stl(file, m);
   EXPECT_EQ(std::filesystem::file_size(file), 84u + 50u * m.faces.size());
+  {  // the header's text ends with a line end (LIGGGHTS reads the first line as text, quotes paired)
+    std::ifstream in(file, std::ios::binary);
+    std::string first_line;
+    std::getline(in, first_line);
+    EXPECT_EQ(first_line, "brash binary STL, metres, 12 triangles");
+  }
   const Mesh r = read_mesh(file);
   EXPECT_EQ(r.vertices.size(), 8u);
   EXPECT_EQ(r.faces.size(), 12u);

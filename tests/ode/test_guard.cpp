@@ -385,6 +385,19 @@ TEST_F(OdeGuard, SceneFromADumpStartsWithItsPiecesAndTheHullWhereItWas) {
       << log;
   // the pieces start with the dump's velocity (0.01 m/s along x): the first dump holds it
   EXPECT_NE(slurp(out / "particles" / "particles_0.csv").find(",0.01,0,0,"), std::string::npos);
+  // a moving window's snapshot holds every piece with its state: the scene is those of state 0
+  {
+    std::ofstream win(dump);
+    win << "id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z,active,state\n" << std::setprecision(17);
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      win << i + 1 << "," << rows[i].x_m + 0.5 * c.ship.speed_m_s << "," << rows[i].y_m << "," << rows[i].z_m << ","
+          << 0.5 * rows[i].diameter_m << ",0.01,0,0,1,0,0,0,1," << (i + 20 < rows.size() ? 0 : 1 + i % 2) << "\n";
+  }
+  fs::remove_all(out);
+  ASSERT_EQ(bench(dump), 0) << slurp(err);
+  EXPECT_NE(slurp(out / "log.txt").find(fmt::format("at t = 0.5 s of its run: {} pieces,", rows.size() - 20)),
+            std::string::npos)
+      << slurp(out / "log.txt");
   std::ofstream(dump) << "id,x,y,z,diameter\n1,0,0,0,0.035\n";
   EXPECT_EQ(bench(dump), 2);  // an input error, before any output
   EXPECT_NE(slurp(err).find(dump.string() + ":1: no column \"radius\""), std::string::npos) << slurp(err);

@@ -18,7 +18,9 @@
 #include <brash/error.hpp>
 #include <brash/post/csv.hpp>
 #include <brash/post/native_dump.hpp>
+#include <brash/post/paraview.hpp>
 #include <brash/post/particles.hpp>
+#include <brash/post/plots.hpp>
 
 #include "synthetic_run.hpp"
 
@@ -198,6 +200,69 @@ TEST(Particles, ActiveColumnIsReadWhereTheFileHasIt) {
     ADD_FAILURE() << "no InputError";
   } catch (const brash::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("bad.csv:2: column 'active'"), std::string::npos) << e.what();
+  }
+  fs::remove_all(dir);
+}
+
+// The moving window's snapshots hold every piece of the channel with a state column (0 in the scene, 1 held out,
+// 2 removed): a statistic reads the pieces in the scene only (the band check does not see a held-out piece deep
+// below the band), the pictures every piece (the ParaView file with its state field, the ice views drawing those
+// outside the scene grey); a state other than 0, 1, 2 is refused naming the file, line and column.
+TEST(Particles, StateColumnOfTheMovingWindow) {
+  const auto dir = scratch("state");
+  fs::create_directories(dir);
+  const std::string header = "id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z,active,state\n";
+  brash::post::testing::write_text(dir / "particles_10.csv", header +
+                                                                 "1,0.5,0.1,-0.2,0.01,0,0,0,1,0,0,0,0,2\n"
+                                                                 "2,1.0,0,0,0.01,0.3,0,0,0.5,0.5,0.5,0.5,1,0\n"
+                                                                 "3,1.5,-0.1,-0.3,0.01,0,0,0,1,0,0,0,0,1\n");
+  brash::post::testing::write_text(dir / "index.csv", "step,t_s,file,hull_x_m\n10,0.5,particles_10.csv,0.2\n");
+  const auto entries = brash::post::read_snapshot_index(dir, false);
+  ASSERT_EQ(entries.size(), 1u);
+  const auto scene = brash::post::read_snapshot(entries[0], false);
+  EXPECT_EQ(scene.id, (std::vector<std::int64_t>{2}));
+  EXPECT_EQ(scene.active, (std::vector<std::uint8_t>{1}));
+  EXPECT_EQ(scene.state, (std::vector<std::uint8_t>{brash::post::kScene}));
+  EXPECT_EQ(scene.vx, (std::vector<double>{0.3}));
+  const auto all = brash::post::read_snapshot(entries[0], false, brash::post::Pieces::All);
+  EXPECT_EQ(all.id, (std::vector<std::int64_t>{1, 2, 3}));
+  EXPECT_EQ(all.state, (std::vector<std::uint8_t>{brash::post::kRemoved, brash::post::kScene, brash::post::kHeldOut}));
+  EXPECT_EQ(all.z[2], -0.3);
+  // the band check: pieces 1 and 3 reach 0.21 m and 0.31 m below the water, piece 2 0.01 m
+  const auto band = brash::post::check_contact_band(entries, 0.1, 0.0, false);
+  EXPECT_EQ(band.pieces_below_max, 0u);
+  EXPECT_NEAR(band.deepest_bottom_m, 0.01, 1e-12);
+  // ParaView: every piece, with the state field
+  brash::post::PostCase c;
+  c.lpp_m = 1.0, c.beam_m = 0.2, c.channel_width_m = 1.0;
+  std::vector<std::string> notes;
+  const auto pv = brash::post::write_paraview(dir, entries, std::nullopt, c, false, notes);
+  ASSERT_EQ(pv.snapshots, 1u);
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  reader->SetFileName((dir / "paraview/particles_10.vtu").string().c_str());
+  reader->Update();
+  auto* grid = reader->GetOutput();
+  ASSERT_EQ(grid->GetNumberOfPoints(), 3);
+  auto* state = grid->GetPointData()->GetArray("state");
+  ASSERT_NE(state, nullptr);
+  EXPECT_EQ(state->GetTuple1(0), 2.0);
+  EXPECT_EQ(state->GetTuple1(2), 1.0);
+  // the ice views: the piece in the scene coloured, the two outside it grey (light held out, dark removed)
+  const auto png = brash::post::plot_ice_views(all, entries[0], c, dir, dir / "work", {});
+  EXPECT_TRUE(is_png(png)) << png;
+  const auto script = brash::post::read_text_file(dir / "work/ice_views_10.gp");
+  EXPECT_NE(script.find("ice_outside_10.dat' using 1:2:3:4 with circles lc rgb variable"), std::string::npos) << script;
+  EXPECT_NE(script.find("1 particles in the scene; grey: 2 outside it"), std::string::npos) << script;
+  const auto grey = brash::post::read_text_file(dir / "work/ice_outside_10.dat");
+  EXPECT_NE(grey.find(fmt::format("0.5 0.1 0.01 {}\n", 0x8c8c8c)), std::string::npos) << grey;
+  EXPECT_NE(grey.find(fmt::format("1.5 -0.1 0.01 {}\n", 0xd9d9d9)), std::string::npos) << grey;
+  EXPECT_EQ(brash::post::read_text_file(dir / "work/ice_top_10.dat").find("1.5 "), std::string::npos);
+  brash::post::testing::write_text(dir / "bad.csv", header + "1,0,0,0,0.01,0,0,0,0.9,0.5,0.5,0.5,1,3\n");
+  try {
+    (void)brash::post::read_snapshot(dir / "bad.csv", false);
+    ADD_FAILURE() << "no InputError";
+  } catch (const brash::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.csv:2: column 'state': '3'"), std::string::npos) << e.what();
   }
   fs::remove_all(dir);
 }

@@ -8,7 +8,6 @@
 #include <fmt/format.h>
 #include <fstream>
 #include <iostream>
-#include <regex>
 #include <sstream>
 
 #include "brash/case_hull_flow.hpp"
@@ -79,74 +78,6 @@ run::ForceRecord read_hull_force_raws(const std::vector<fs::path>& raws, double 
   }
   if (every_row_split && !out.rows.empty()) out.set_split(split);
   return out;
-}
-
-namespace {
-
-// particles/index.csv from every particles_<step>.csv in the folder, by step: the snapshots of all attempts
-// of a resumed run (a resumed attempt rewrites those after its restart; the ones before it stay valid).
-void write_snapshot_index(const fs::path& run_dir, const Case& c) {
-  std::map<long, std::string> snapshots;
-  const std::regex name_re(R"(particles_([0-9]+)\.csv)");
-  std::smatch m;
-  for (const auto& e : fs::directory_iterator(run_dir / "particles")) {
-    const std::string name = e.path().filename().string();
-    if (std::regex_match(name, m, name_re)) snapshots[std::stol(m[1])] = name;
-  }
-  std::string index = "step,t_s,file,hull_x_m\n";
-  for (const auto& [step, name] : snapshots) {
-    const double t = step * c.run.timestep_s;
-    index += fmt::format("{},{:.9g},{},{:.9g}\n", step, t, name, c.hull.start_x_m + c.ship.speed_m_s * t);
-  }
-  run::write_atomic(run_dir / "particles" / "index.csv", index);
-}
-
-// One LIGGGHTS custom dump -> particles/particles_<step>.csv (sorted by id).
-void convert_dump(const fs::path& dump, const fs::path& run_dir) {
-  std::ifstream in(dump);
-  std::string line;
-  long step = -1;
-  std::map<long, std::string> rows;
-  bool atoms = false;
-  while (std::getline(in, line)) {
-    if (line.rfind("ITEM: TIMESTEP", 0) == 0) {
-      std::getline(in, line);
-      step = std::stol(line);
-      continue;
-    }
-    if (line.rfind("ITEM:", 0) == 0) {
-      atoms = line.rfind("ITEM: ATOMS", 0) == 0;
-      continue;
-    }
-    if (!atoms) continue;
-    std::istringstream ss(line);
-    long id;
-    double v[12];
-    ss >> id;
-    for (double& x : v) ss >> x;
-    if (!ss) continue;
-    rows[id] = fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.6g},{:.6g},{:.6g},{:.6g},{:.0f}\n", id,
-                           v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9], v[10], v[11]);
-  }
-  if (step < 0) return;
-  std::string csv = "id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z,active\n";
-  for (const auto& [id, row] : rows) csv += row;
-  run::write_atomic(run_dir / "particles" / fmt::format("particles_{:010d}.csv", step), csv);
-}
-
-}  // namespace
-
-std::size_t convert_dumps(const fs::path& run_dir, const Case& c) {
-  std::vector<fs::path> dumps;
-  for (const auto& e : fs::directory_iterator(run_dir / "particles"))
-    if (e.path().filename().string().rfind("dump.", 0) == 0) dumps.push_back(e.path());
-  std::sort(dumps.begin(), dumps.end());
-  for (const auto& dump : dumps) {
-    convert_dump(dump, run_dir);
-    fs::remove(dump);
-  }
-  write_snapshot_index(run_dir, c);
-  return dumps.size();
 }
 
 // fix brash/exit's line "fix brash/exit: step S: K piece(s) left ... ; N in all" -> N (the fix's count is

@@ -10,6 +10,7 @@
 #include "brash/hull/mesh.hpp"
 #include "brash/run/engine.hpp"
 #include "liggghts_input.h"
+#include "particle_snapshots.h"  // convert_dumps
 
 namespace brash::liggghts {
 
@@ -55,9 +56,6 @@ class LiggghtsEngine final : public run::Engine {
 std::vector<std::filesystem::path> hull_force_raws(const std::filesystem::path& run_dir);
 // Rows of the raw files by model time, up to t_max_s (see liggghts_engine.cpp for how attempts overlap).
 run::ForceRecord read_hull_force_raws(const std::vector<std::filesystem::path>& raws, double t_max_s);
-// LIGGGHTS dumps -> particles/particles_<step>.csv, then particles/index.csv of every snapshot; the number of
-// dumps converted.
-std::size_t convert_dumps(const std::filesystem::path& run_dir, const Case& c);
 // fix brash/exit's line "... ; N in all" -> N (-1 for any other line).
 long exit_total(const std::string& line);
 

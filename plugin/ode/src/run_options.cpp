@@ -27,8 +27,8 @@ std::string read_text(const fs::path& p) {
 }
 
 // A particle dump (particles/*.csv of any engine's run: a header naming id,x,y,z,radius and optionally vx,vy,vz):
-// the pieces in the file's order with their velocities (zero without the columns). InputError naming file, line
-// and column.
+// the pieces in the file's order with their velocities (zero without the columns); of a moving window's snapshot
+// (a state column) the pieces in its scene, state 0. InputError naming file, line and column.
 SceneFromDump read_scene_dump(const fs::path& file) {
   std::ifstream in(file);
   if (!in) throw InputError(fmt::format("--scene-from {}: cannot be read", file.string()));
@@ -63,6 +63,7 @@ SceneFromDump read_scene_dump(const fs::path& file) {
         throw InputError(fmt::format("{}:{}: \"{}\" is not a finite number", file.string(), ln, cell));
     }
     if (v.size() < col.size()) throw InputError(fmt::format("{}:{}: {} values, the header names {}", file.string(), ln, v.size(), col.size()));
+    if (col.count("state") && v[col["state"]] != 0) continue;  // held out or removed: not in that scene
     const double r = v[col["radius"]];
     if (!(r > 0)) throw InputError(fmt::format("{}:{}: radius {} is not > 0", file.string(), ln, r));
     out.spheres.push_back({v[col["x"]], v[col["y"]], v[col["z"]], 2 * r});

@@ -1,6 +1,8 @@
 // Particle snapshots of a run: particles/index.csv (step,t_s,file,hull_x_m) and
-// particles/particles_<step>.csv (id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z[,active]: active is
-// 1 for an integrated piece, 0 for idle far-field ice; files without it (YADE) are read too).
+// particles/particles_<step>.csv (id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z[,active[,state]]:
+// active is 1 for an integrated piece, 0 for idle far-field ice; files without it (YADE) are read too; state, in the
+// snapshots of a run with the moving window, is 0 for a piece in the scene, 1 for one held out ahead, 2 for one
+// removed: every statistic reads the pieces in the scene only, the pictures every piece).
 #pragma once
 #include <cstdint>
 #include <filesystem>
@@ -21,6 +23,7 @@ struct Snapshot {
   std::vector<std::int64_t> id;
   std::vector<double> x, y, z, radius, vx, vy, vz, submerged_fraction, ca_x, ca_y, ca_z;
   std::vector<std::uint8_t> active;  // 1 integrated, 0 idle; empty when the file has no active column
+  std::vector<std::uint8_t> state;   // kScene, kHeldOut, kRemoved; empty when the file has no state column
   std::size_t size() const { return id.size(); }
   bool tail_dropped = false;
 };
@@ -29,10 +32,19 @@ struct Snapshot {
 // last line. Entries whose snapshot file does not exist are kept (the caller decides).
 std::vector<SnapshotEntry> read_snapshot_index(const std::filesystem::path& particles_dir, bool run_in_progress);
 
+// The state column's codes (the moving window, speedups.moving_window): in the scene; held out (the bed ahead, not
+// yet in the scene: where the packing has it, at rest); removed (gone behind the stern or through the channel's
+// ends: where it was last seen, at rest).
+inline constexpr std::uint8_t kScene = 0, kHeldOut = 1, kRemoved = 2;
+
+// Which pieces a snapshot is read with: those in the scene (what every statistic uses: the snapshot as the engine
+// had it), or every piece of the channel, those outside the scene too (the pictures).
+enum class Pieces { Scene, All };
+
 // Strict reader; InputError naming file and line.
-Snapshot read_snapshot(const std::filesystem::path& file, bool run_in_progress);
+Snapshot read_snapshot(const std::filesystem::path& file, bool run_in_progress, Pieces pieces = Pieces::Scene);
 // The snapshot of an entry, brash's CSV or a native dump.
-Snapshot read_snapshot(const SnapshotEntry& entry, bool run_in_progress);
+Snapshot read_snapshot(const SnapshotEntry& entry, bool run_in_progress, Pieces pieces = Pieces::Scene);
 
 // Does the ice stay within the hull's contact band (hull.band_m)? Below the band's lower edge the contact hull has
 // no triangles, so a piece pushed deeper beside the hull loses its hull contacts there (the guard only stops a run
