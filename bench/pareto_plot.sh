@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Run time vs error of the speed-up knobs as a Pareto plot: one point per paired-seed ensemble of
 # bench/rank_ensemble.sh (OUT/ensemble-<reference>-vs-<knob>.json): x = speed-up of the knob over the reference
-# (summed wall times), y = mean paired difference of the window-mean resistance with its 95 % CI, the tolerance
+# (summed wall times), y = the knob's effect on the window-mean resistance, (B - A) / A, with its 95 % CI, the tolerance
 # band shaded. Prints the table (markdown) and writes the PNG, its data and the gnuplot script.
 #   bash bench/pareto_plot.sh [ENSEMBLE_DIR (runs/rank-ensemble)] [PNG (docs/performance_pareto.png)]
 # env: TOL_PCT (2), REFERENCE (np1: only ensembles whose side A is this run name).
@@ -23,12 +23,15 @@ for f in files:
     if e['side_a'].split(':')[0] != e['side_b'].split(':')[0]:
         continue  # a rank comparison, not a knob: its wall times are not a like-for-like speed-up
     knob = e['side_b'].partition(':')[2] or '(none)'
-    rows.append((e['speedup'], 100 * e['diff_rel'], 100 * e['ci95_rel'], e['pairs'], knob, e['case'],
+    if 'effect_rel' not in e:
+        sys.exit('pareto_plot: %s holds no effect on side A (written before effects were (B - A) / A): run '
+                 'brash-post paired-ensemble on its runs again' % f)
+    rows.append((e['speedup'], 100 * e['effect_rel'], 100 * e['effect_ci95_rel'], e['pairs'], knob, e['case'],
                  e['mean_a_N'], e['mean_b_N']))
 if not rows:
     sys.exit('pareto_plot: no knob ensembles (side A and B on the same ranks) in the files given')
 rows.sort()
-print('| knob (side B; side A: the case as it is) | pairs | speed-up | mean A [N] | mean B [N] | paired difference, 95 %% CI | within %g %% |' % tol)
+print('| knob (side B; side A: the case as it is) | pairs | speed-up | mean A [N] | mean B [N] | (B − A) / A, 95 %% CI | within %g %% |' % tol)
 print('|---|---|---|---|---|---|---|')
 within = []
 for sp, d, ci, n, knob, case, ma, mb in rows:
@@ -50,7 +53,7 @@ base = os.path.basename(stem)
 with open(stem + '.gp', 'w') as f:
     f.write("set terminal pngcairo size 900,600\nset output '%s.png'\nset termoption noenhanced\n" % base)
     f.write("set xlabel 'speed-up over the reference (summed wall time of the ensemble)'\n")
-    f.write("set ylabel 'mean resistance: paired difference to the reference [%]'\nset grid\nset key right center\n")
+    f.write("set ylabel 'mean resistance: effect on the reference, (B - A) / A [%]'\nset grid\nset key right center\n")
     f.write("set title 'Run time vs error (%s, paired-seed ensembles; bars: 95 %% CI)'\n" % rows[0][5])
     f.write("set offsets graph 0.1, graph 0.1, graph 0.1, graph 0.1\n")
     f.write("plot %g with lines dt 2 lc 'grey' title '+-%g %%', %g with lines dt 2 lc 'grey' notitle, " % (tol, tol, -tol))

@@ -4,8 +4,8 @@
 # round-off, so one run per variant is one realisation each and their difference is dominated by run-to-run scatter.
 # Here every member is a packing seed (ice.seed); seed s runs as side A and as side B with the same packing (a pair),
 # so the pair's difference holds the chaotic scatter and the effect of the change, not the packing's. The result is
-# the mean of the paired relative differences (B - A) / mean with its 95 % confidence interval (Student t): B makes
-# no difference beyond 1 % when that interval lies inside [-1 %, +1 %].
+# B's effect on side A, (B - A) / A of the ensemble means, with its 95 % confidence interval (delta method, Student
+# t; brash/stats/paired.hpp): B makes no difference beyond 1 % when that interval lies inside [-1 %, +1 %].
 #   bash bench/rank_ensemble.sh [N_SEEDS (12)] [OUT (runs/rank-ensemble)]
 # env: CASE (cases/jbc_narrow), SIDE_A ("1"), SIDE_B ("2"): a side is NP[:section.key=value,...] (MPI ranks, then
 # edits of the case, as in bench/speed_vs_error.sh), e.g. SIDE_B="1:run.timestep_s=2.0e-4" for the dt knob; NP

@@ -402,8 +402,8 @@ int main(int argc, char** argv) {
 
   auto* ensemble = app.add_subcommand(
       "paired-ensemble",
-      "a paired-seed ensemble (bench/rank_ensemble.sh): the mean of the pairs' relative differences (B - A) / mean "
-      "with its 95 % CI, as a table and DIR/ensemble-<A>-vs-<B>.json");
+      "a paired-seed ensemble (bench/rank_ensemble.sh): B's effect (B - A) / A of the ensemble means with its 95 % "
+      "CI (delta method), as a table and DIR/ensemble-<A>-vs-<B>.json");
   EnsembleSpec espec;
   double tol_pct = 1;
   ensemble->add_option("DIR", espec.dir, "folder holding the runs s<seed>-<run name>")

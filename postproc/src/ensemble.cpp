@@ -53,6 +53,9 @@ double sum_of(const std::vector<double>& x) {
   return s;
 }
 
+constexpr const char* kDefinition =
+    "(B - A) / A of the ensemble means; 95 % CI by the delta method, Student t with pairs - 1 degrees of freedom";
+
 fs::path run_dir(const EnsembleSpec& spec, std::size_t seed, const EnsembleSide& side) {
   return spec.dir / fmt::format("s{}-{}", seed, side.run_name);
 }
@@ -75,6 +78,24 @@ std::vector<EnsemblePair> read_ensemble(const EnsembleSpec& spec) {
   return pairs;
 }
 
+EnsembleEffect read_ensemble_summary(const nlohmann::json& j) {
+  EnsembleEffect e;
+  e.pairs = j.at("pairs").get<int>();
+  e.mean_a_N = j.at("mean_a_N").get<double>();
+  e.mean_b_N = j.at("mean_b_N").get<double>();
+  if (j.contains("a_N")) {  // the per-pair values: the statistics from them, by the one definition
+    const auto a = j.at("a_N").get<std::vector<double>>(), b = j.at("b_N").get<std::vector<double>>();
+    const auto p = stats::paired_effect(a, b);
+    e.effect_rel = p.effect.mean;
+    e.ci95_rel = p.effect.ci95;
+    return e;
+  }
+  e.effect_rel = stats::relative_effect(e.mean_a_N, e.mean_b_N);
+  e.pair_mean_diff_rel = j.at("diff_rel").get<double>();
+  e.pair_mean_ci95_rel = j.at("ci95_rel").get<double>();
+  return e;
+}
+
 std::string ensemble_file_name(const std::string& run_name_a, const std::string& run_name_b) {
   const std::string stem = fmt::format("ensemble-{}-vs-{}", run_name_a, run_name_b);
   constexpr std::size_t kMaxName = 200, kHashed = kMaxName - 22;  // "-" + 16 hex + ".json"
@@ -89,7 +110,7 @@ EnsembleSummary summarize_ensemble(const EnsembleSpec& spec, const std::vector<E
   const std::string lb = spec.b.label.empty() ? spec.b.run_name : spec.b.label;
   auto& t = out.text;
   t += fmt::format("== {}, one packing seed per pair, mean resistance over its window, model scale\n", spec.case_name);
-  t += fmt::format("| seed | A: {} [N] | B: {} [N] | (B - A) / mean |\n|---|---|---|---|\n", la, lb);
+  t += fmt::format("| seed | A: {} [N] | B: {} [N] | (B - A) / A |\n|---|---|---|---|\n", la, lb);
   std::vector<double> a, b, wall_a, wall_b;
   for (const auto& p : pairs) {
     if (!p.complete()) {
@@ -101,23 +122,25 @@ EnsembleSummary summarize_ensemble(const EnsembleSpec& spec, const std::vector<E
     wall_a.push_back(p.wall_a_s);
     wall_b.push_back(p.wall_b_s);
     t += fmt::format("| {} | {:.3f} | {:.3f} | {:+.2f} % |\n", p.seed, *p.a_N, *p.b_N,
-                     100 * stats::relative_difference(*p.a_N, *p.b_N));
+                     100 * stats::relative_effect(*p.a_N, *p.b_N));
   }
   if (a.size() < 2) {
     t += "fewer than 2 complete pairs: no ensemble statement\n";
     return out;
   }
-  const auto e = stats::paired_relative_difference(a, b);
-  const auto& d = e.difference;
+  const auto e = stats::paired_effect(a, b);
+  const auto& d = e.effect;
   const double wa = sum_of(wall_a), wb = sum_of(wall_b);
   t += fmt::format("pairs: {}; ensemble mean A ({}) {:.3f} N, B ({}) {:.3f} N\n", d.n, la, e.mean_a, lb, e.mean_b);
-  t += fmt::format("paired difference (B - A): {:+.2f} % +- {:.2f} % (95 % CI), sd of one pair {:.2f} %\n",
+  t += fmt::format("effect (B - A) / A of the means: {:+.2f} % +- {:.2f} % (95 % CI, delta method), sd of one "
+                   "pair {:.2f} %\n",
                    100 * d.mean, 100 * d.ci95, 100 * d.sd);
   t += fmt::format("wall time: A {:.0f} s, B {:.0f} s in all; speed-up of B over A {:.2f}x\n", wa, wb, wa / wb);
   const auto finite_or_null = [](double v) { return std::isfinite(v) ? nlohmann::ordered_json(v) : nullptr; };
   out.json = nlohmann::ordered_json{{"case", spec.case_name}, {"side_a", spec.a.spec},     {"side_b", spec.b.spec},
                                     {"pairs", d.n},          {"mean_a_N", e.mean_a},       {"mean_b_N", e.mean_b},
-                                    {"diff_rel", d.mean},    {"ci95_rel", d.ci95},         {"sd_rel", d.sd},
+                                    {"effect_rel", d.mean},  {"effect_ci95_rel", d.ci95},  {"effect_sd_rel", d.sd},
+                                    {"definition", kDefinition}, {"a_N", a},               {"b_N", b},
                                     {"wall_a_s", finite_or_null(wa)}, {"wall_b_s", finite_or_null(wb)},
                                     {"speedup", finite_or_null(wa / wb)}};
   const std::string tol = fmt::format("{:g}", 100 * spec.tol);

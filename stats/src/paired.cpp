@@ -1,4 +1,4 @@
-// Mean with its Student-t CI and the paired-ensemble relative difference (paired.hpp).
+// Mean with its Student-t CI and the paired-ensemble effect on side A (paired.hpp).
 #include <brash/stats/paired.hpp>
 #include <brash/stats/student_t.hpp>
 
@@ -30,24 +30,34 @@ MeanCi mean_ci95(std::span<const double> x) {
   return m;
 }
 
-double relative_difference(double a, double b) { return (b - a) / (0.5 * (a + b)); }
+double relative_effect(double a, double b) {
+  if (a == 0 || !std::isfinite(a)) throw std::invalid_argument("relative_effect: side A must be finite and non-zero");
+  return (b - a) / a;
+}
 
 IndependentDifference independent_relative_difference(double reference, double reference_ci95, double mean,
                                                       double ci95) {
   if (reference == 0 || !std::isfinite(reference))
     throw std::invalid_argument("independent_relative_difference: the reference must be finite and non-zero");
-  return {(mean - reference) / reference, std::hypot(reference_ci95, ci95) / std::abs(reference)};
+  return {relative_effect(reference, mean), std::hypot(reference_ci95, ci95) / std::abs(reference)};
 }
 
-PairedDifference paired_relative_difference(std::span<const double> a, std::span<const double> b) {
-  if (a.size() != b.size()) throw std::invalid_argument("paired_relative_difference: sides differ in length");
-  if (a.size() < 2) throw std::invalid_argument("paired_relative_difference: needs at least 2 pairs");
-  PairedDifference p;
+PairedEffect paired_effect(std::span<const double> a, std::span<const double> b) {
+  if (a.size() != b.size()) throw std::invalid_argument("paired_effect: sides differ in length");
+  if (a.size() < 2) throw std::invalid_argument("paired_effect: needs at least 2 pairs");
+  PairedEffect p;
   const auto k = static_cast<double>(a.size());
   p.mean_a = sum_of(a) / k;
   p.mean_b = sum_of(b) / k;
-  for (std::size_t i = 0; i < a.size(); ++i) p.relative.push_back(relative_difference(a[i], b[i]));
-  p.difference = mean_ci95(p.relative);
+  if (p.mean_a == 0 || !std::isfinite(p.mean_a))
+    throw std::invalid_argument("paired_effect: side A's mean must be finite and non-zero");
+  for (std::size_t i = 0; i < a.size(); ++i) p.relative.push_back(relative_effect(a[i], b[i]));
+  const double ratio = p.mean_b / p.mean_a;
+  // the delta method: E's first-order error is the mean of z_i (b_i - ratio a_i) / mean a
+  std::vector<double> z;
+  for (std::size_t i = 0; i < a.size(); ++i) z.push_back((b[i] - ratio * a[i]) / p.mean_a);
+  p.effect = mean_ci95(z);
+  p.effect.mean = relative_effect(p.mean_a, p.mean_b);
   return p;
 }
 

@@ -4,15 +4,22 @@
 Usage: check_readme_headline.py README.md
 
 In the section "## The paper case": every table row that links a report (report.md) must show that run's
-full-scale resistance and its 95 % interval (report.json: resistance_full_kN, resistance_full_ci95_kN, to 0.1 kN)
-and its ratio R_CH / resistance (ratio_fsicr_to_sim, to 0.01); the paper's rows its levels (paper_full_kN) and
-ratios (the paper's R_CH over them); the R_CH line ours and the paper's (fsicr.R_CH_kN, fsicr.paper_R_CH_kN, to
+full-scale resistance and its 95 % interval (report.json: resistance_full_kN, resistance_full_ci95_kN, to 0.1 kN),
+its ratio R_CH / resistance (ratio_fsicr_to_sim, to 0.01) and its window halves (resistance_model_N.window_halves:
+the second half's mean on the first's, to 0.1 %, and "**drifts**" where the report flags drift, else "steady");
+the paper's rows their levels (paper_full_kN) and ratios (the paper's R_CH over them) and no halves; the R_CH line ours and the paper's (fsicr.R_CH_kN, fsicr.paper_R_CH_kN, to
 1 kN). Prints each mismatch; exit 1 if there is one or if no report is linked.
 """
 import json
 import os
 import re
 import sys
+
+
+def halves_cell(rep):
+    """The window halves' cell of a run: "+2.1 %: **drifts**" or "+0.3 %: steady"."""
+    h = rep["resistance_model_N"]["window_halves"]
+    return "%+.1f %%: %s" % (100 * h["difference"] / h["first_mean"], "**drifts**" if h["drifts"] else "steady")
 
 
 def main(readme):
@@ -32,6 +39,8 @@ def main(readme):
                 problems.append("%s: resistance %s, its report says %s" % (cells[0], cells[1], want))
             if cells[2] != "%.2f" % rep["ratio_fsicr_to_sim"]:
                 problems.append("%s: ratio %s, its report says %.2f" % (cells[0], cells[2], rep["ratio_fsicr_to_sim"]))
+            if cells[3] != halves_cell(rep):
+                problems.append("%s: window halves %s, its report says %s" % (cells[0], cells[3], halves_cell(rep)))
     if not reports:
         return ["no report linked in the section"]
     rep = reports[0]
@@ -39,8 +48,8 @@ def main(readme):
     for key, name in (("added_mass", "paper, added-mass model"), ("drag", "paper, drag model")):
         row = [line for line in rows if line.startswith("| " + name + " |")]
         level = rep["paper_full_kN"][key]
-        want = ["%g" % level, "%.2f" % (paper_rch / level)]
-        got = [c.strip() for c in row[0].strip("|").split("|")][1:3] if row else None
+        want = ["%g" % level, "%.2f" % (paper_rch / level), "—"]
+        got = [c.strip() for c in row[0].strip("|").split("|")][1:4] if row else None
         if got != want:
             problems.append("%s: %s, the reports say %s" % (name, got, want))
     m = re.search(r"R_CH \(ice class \w+\): (\d+) kN from our hull, (\d+) kN in the paper", section)

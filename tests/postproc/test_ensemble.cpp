@@ -1,7 +1,9 @@
 // brash-post paired-ensemble on synthetic run directories (report.json and meta.json of each seed and side): the
 // table, the statement and the summary JSON that brash-study-report and bench/pareto_plot.sh read, on a hand-computed
-// ensemble. Pairs (9.5, 10.5), (17, 23), (36, 44) differ by 0.1, 0.3, 0.2 of their mean: mean 0.2, sd 0.1, CI95 =
-// t_{0.975, 2} 0.1 / sqrt(3) = 4.303 x 0.0577 = 0.2484; seed 4 has only side A complete.
+// ensemble. Pairs (9.5, 10.5), (17, 23), (36, 44), means 62.5 / 3 and 77.5 / 3: B's effect on A is 15 / 62.5 = 0.24
+// (over the pairs' means it was 0.2); the delta method's b_i - 1.24 a_i are -1.28, 1.92, -0.64, so
+// sd = sqrt(5.7344 / 2) / (62.5 / 3) = 0.08128 and CI95 = t_{0.975, 2} sd / sqrt(3) = 4.303 x 0.04693 = 0.2019;
+// seed 4 has only side A complete.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -81,15 +83,16 @@ TEST(PairedEnsemble, HandComputedTableAndSummary) {
   const auto out = ensemble(d, 4, "50", &rc);
   ASSERT_EQ(rc, 0) << out;
   expect_line(out, "== synth, one packing seed per pair, mean resistance over its window, model scale");
-  expect_line(out, "| seed | A: 1 rank [N] | B: 2 ranks, run.timestep_s=2e-4 [N] | (B - A) / mean |");
-  expect_line(out, "| 1 | 9.500 | 10.500 | +10.00 % |");
-  expect_line(out, "| 2 | 17.000 | 23.000 | +30.00 % |");
-  expect_line(out, "| 3 | 36.000 | 44.000 | +20.00 % |");
+  expect_line(out, "| seed | A: 1 rank [N] | B: 2 ranks, run.timestep_s=2e-4 [N] | (B - A) / A |");
+  expect_line(out, "| 1 | 9.500 | 10.500 | +10.53 % |");
+  expect_line(out, "| 2 | 17.000 | 23.000 | +35.29 % |");
+  expect_line(out, "| 3 | 36.000 | 44.000 | +22.22 % |");
   expect_line(out, "| 4 | 20.25 | - | (incomplete) |");
   expect_line(out, "pairs: 3; ensemble mean A (1 rank) 20.833 N, B (2 ranks, run.timestep_s=2e-4) 25.833 N");
-  expect_line(out, "paired difference (B - A): +20.00 % +- 24.84 % (95 % CI), sd of one pair 10.00 %");
+  expect_line(out, "effect (B - A) / A of the means: +24.00 % +- 20.19 % (95 % CI, delta method), sd of one pair "
+                   "8.13 %");
   expect_line(out, "wall time: A 330 s, B 180 s in all; speed-up of B over A 1.83x");
-  expect_line(out, "WITHIN 50 %: the 95 % CI [-4.84, +44.84] % lies inside [-50, +50] %");
+  expect_line(out, "WITHIN 50 %: the 95 % CI [+3.81, +44.19] % lies inside [-50, +50] %");
 
   const auto file = d / "ensemble-np1-vs-np2-dt.json";
   ASSERT_TRUE(fs::exists(file)) << out;
@@ -102,17 +105,22 @@ TEST(PairedEnsemble, HandComputedTableAndSummary) {
   EXPECT_EQ(s["pairs"], 3);
   EXPECT_NEAR(s["mean_a_N"].get<double>(), 62.5 / 3, 1e-12);
   EXPECT_NEAR(s["mean_b_N"].get<double>(), 77.5 / 3, 1e-12);
-  EXPECT_NEAR(s["diff_rel"].get<double>(), 0.2, 1e-15);
-  EXPECT_NEAR(s["sd_rel"].get<double>(), 0.1, 1e-15);
-  EXPECT_NEAR(s["ci95_rel"].get<double>(), 4.303 * 0.1 / std::sqrt(3.0), 1e-15);
+  const double sd = std::sqrt(5.7344 / 2) / (62.5 / 3);
+  EXPECT_NEAR(s["effect_rel"].get<double>(), 0.24, 1e-15);
+  EXPECT_NEAR(s["effect_sd_rel"].get<double>(), sd, 1e-14);
+  EXPECT_NEAR(s["effect_ci95_rel"].get<double>(), 4.303 * sd / std::sqrt(3.0), 1e-14);
+  EXPECT_EQ(s["a_N"], json({9.5, 17.0, 36.0}));  // the complete pairs only
+  EXPECT_EQ(s["b_N"], json({10.5, 23.0, 44.0}));
   EXPECT_EQ(s["wall_a_s"].get<double>(), 330.0);  // seed 4 is not a pair: its wall times are not counted
   EXPECT_EQ(s["wall_b_s"].get<double>(), 180.0);
   EXPECT_NEAR(s["speedup"].get<double>(), 330.0 / 180.0, 1e-15);
 }
 
-// The summary has the archived summaries' fields in their order (evidence/ensembles: read by
-// brash-study-report for its `paired` rows).
-TEST(PairedEnsemble, SummaryHasTheArchivedFields) {
+// The summary's fields, in order, and read back (brash::post::read_ensemble_summary, as brash-study-report reads
+// its `paired` rows): the effect from the per-pair values. An archived summary of before (evidence/ensembles: the
+// mean of (B - A) / mean of the pair, no per-pair values) reads as its effect on A from its ensemble means, exactly,
+// with no CI on A and its own numbers kept.
+TEST(PairedEnsemble, SummaryFieldsAndReadingBack) {
   const auto d = fresh_dir("fields");
   write_hand_set(d);
   int rc = -1;
@@ -121,32 +129,56 @@ TEST(PairedEnsemble, SummaryHasTheArchivedFields) {
   const auto ours = nlohmann::ordered_json::parse(read(d / "ensemble-np1-vs-np2-dt.json"));
   std::vector<std::string> keys;
   for (const auto& [k, v] : ours.items()) keys.push_back(k);
-  const fs::path archive = fs::path(BRASH_SOURCE_DIR) / "evidence/ensembles/fluid-reading";
-  ASSERT_TRUE(fs::is_directory(archive));
+  EXPECT_EQ(keys, (std::vector<std::string>{"case", "side_a", "side_b", "pairs", "mean_a_N", "mean_b_N", "effect_rel",
+                                            "effect_ci95_rel", "effect_sd_rel", "definition", "a_N", "b_N",
+                                            "wall_a_s", "wall_b_s", "speedup"}));
+  const auto e = brash::post::read_ensemble_summary(ours);
+  EXPECT_EQ(e.pairs, 3);
+  EXPECT_NEAR(e.effect_rel, 0.24, 1e-15);
+  EXPECT_NEAR(e.ci95_rel, 4.303 * std::sqrt(5.7344 / 2) / (62.5 / 3) / std::sqrt(3.0), 1e-14);
+  EXPECT_TRUE(e.has_ci());
+  EXPECT_TRUE(e.resolved());  // [0.038, 0.442]
+  EXPECT_TRUE(std::isnan(e.pair_mean_diff_rel));
+
+  const fs::path archive = fs::path(BRASH_SOURCE_DIR) / "evidence/ensembles/quick-hull-flow";
   int compared = 0;
-  for (const auto& e : fs::directory_iterator(archive)) {
-    if (e.path().extension() != ".json") continue;
-    const auto j = nlohmann::ordered_json::parse(read(e.path()));
-    std::vector<std::string> archived;
-    for (const auto& [k, v] : j.items()) archived.push_back(k);
-    EXPECT_EQ(keys, archived) << e.path();
+  for (const auto& f : fs::directory_iterator(archive)) {
+    const auto j = json::parse(read(f.path()));
+    ASSERT_FALSE(j.contains("a_N")) << f.path();
+    const auto old = brash::post::read_ensemble_summary(j);
+    const double ma = j["mean_a_N"].get<double>(), mb = j["mean_b_N"].get<double>();
+    EXPECT_EQ(old.effect_rel, (mb - ma) / ma) << f.path();
+    EXPECT_FALSE(old.has_ci());
+    EXPECT_FALSE(old.resolved());
+    EXPECT_EQ(old.pair_mean_diff_rel, j["diff_rel"].get<double>());
+    EXPECT_EQ(old.pair_mean_ci95_rel, j["ci95_rel"].get<double>());
     ++compared;
   }
-  EXPECT_GT(compared, 0);
+  EXPECT_EQ(compared, 2);
 }
 
-// Not resolved: the statement says how many pairs would resolve it at this scatter ((1.96 x 0.1 / (0.21 - 0.2))^2 =
-// 384.16 -> 385), or nothing when the mean itself is outside the tolerance.
+// The quick case's panel flow on still water: 17.04 -> 8.51 N is -50.1 % on side A, where the mean of the pair
+// gave -66.79 %.
+TEST(PairedEnsemble, OldSummaryReadsOnSideA) {
+  const json j = json::parse(read(fs::path(BRASH_SOURCE_DIR) /
+                                  "evidence/ensembles/quick-hull-flow/ensemble-np1-vs-np1-fluid.hull_flow_panel.json"));
+  const auto e = brash::post::read_ensemble_summary(j);
+  EXPECT_NEAR(e.effect_rel, -0.5007, 5e-5);
+  EXPECT_NEAR(e.pair_mean_diff_rel, -0.6679, 5e-5);
+}
+
+// Not resolved: the statement says how many pairs would resolve it at this scatter ((1.96 x 0.08128 / (0.3 -
+// 0.24))^2 = 7.05 -> 8), or nothing when the effect itself is outside the tolerance.
 TEST(PairedEnsemble, NotShownWithPairsToResolve) {
   const auto d = fresh_dir("not_shown");
   write_hand_set(d);
   int rc = -1;
-  auto out = ensemble(d, 4, "21", &rc);
+  auto out = ensemble(d, 4, "30", &rc);
   ASSERT_EQ(rc, 0) << out;
-  expect_line(out, "NOT SHOWN: the 95 % CI [-4.84, +44.84] % is not inside [-21, +21] %; about 385 pairs would "
+  expect_line(out, "NOT SHOWN: the 95 % CI [+3.81, +44.19] % is not inside [-30, +30] %; about 8 pairs would "
                    "resolve it at this scatter");
-  out = ensemble(d, 4, "10", &rc);
-  expect_line(out, "NOT SHOWN: the 95 % CI [-4.84, +44.84] % is not inside [-10, +10] %");
+  out = ensemble(d, 4, "21", &rc);
+  expect_line(out, "NOT SHOWN: the 95 % CI [+3.81, +44.19] % is not inside [-21, +21] %");
 }
 
 // Two pairs: one degree of freedom, CI95 = 12.706 sd / sqrt(2); one pair: no statement and no summary file.
@@ -158,9 +190,11 @@ TEST(PairedEnsemble, StudentQuantileOfPairsMinusOne) {
   ASSERT_EQ(rc, 0);
   const json s = json::parse(read(d / "ensemble-np1-vs-np2-dt.json"));
   EXPECT_EQ(s["pairs"], 2);
-  const double sd = std::sqrt(2 * 0.1 * 0.1 / 1);  // differences 0.1 and 0.3 about their mean 0.2
-  EXPECT_NEAR(s["sd_rel"].get<double>(), sd, 1e-15);
-  EXPECT_NEAR(s["ci95_rel"].get<double>(), 12.706 * sd / std::sqrt(2.0), 1e-14);
+  // pairs (9.5, 10.5), (17, 23): means 13.25 and 16.75; z_i = (b_i - (16.75 / 13.25) a_i) / 13.25 = -+z
+  const double z = (23 - 16.75 / 13.25 * 17) / 13.25, sd = std::sqrt(2 * z * z / 1);
+  EXPECT_NEAR(s["effect_rel"].get<double>(), 3.5 / 13.25, 1e-15);
+  EXPECT_NEAR(s["effect_sd_rel"].get<double>(), sd, 1e-14);
+  EXPECT_NEAR(s["effect_ci95_rel"].get<double>(), 12.706 * sd / std::sqrt(2.0), 1e-13);
 
   fs::remove(d / "ensemble-np1-vs-np2-dt.json");
   const auto out = ensemble(d, 1, "1", &rc);
@@ -182,7 +216,7 @@ TEST(PairedEnsemble, MissingWallTimeIsNull) {
   const json s = json::parse(read(d / "ensemble-np1-vs-np2-dt.json"));
   EXPECT_TRUE(s["wall_a_s"].is_null());
   EXPECT_TRUE(s["speedup"].is_null());
-  EXPECT_NEAR(s["diff_rel"].get<double>(), 0.5 * (1 / 10.5 + 1 / 20.5), 1e-15);
+  EXPECT_NEAR(s["effect_rel"].get<double>(), 1.0 / 15, 1e-15);
 }
 
 TEST(PairedEnsemble, LongSideNamesGiveAShortDistinctFileName) {

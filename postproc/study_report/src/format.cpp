@@ -17,6 +17,13 @@ std::string num(double v, int prec) {
 
 std::string pm(double v, double ci, int prec) { return fmt::format("{} ± {}", num(v, prec), num(ci, prec)); }
 
+std::string effect_cell(const EnsembleEffect& e, int prec) {
+  const std::string effect = fmt::format("{:+.{}f} %", 100.0 * e.effect_rel, prec);
+  if (e.has_ci()) return fmt::format("{} ± {:.{}f} %", effect, 100.0 * e.ci95_rel, prec);
+  return fmt::format("{} (CI on A not recomputable; recorded on the pair mean: ± {:.{}f} %)", effect,
+                     100.0 * e.pair_mean_ci95_rel, prec);
+}
+
 std::string optnum(const std::optional<double>& v, int prec) { return v ? num(*v, prec) : "n/a"; }
 
 std::string md_escape(const std::string& s) {

@@ -149,7 +149,9 @@ Run load_run(const Row& row, std::string ref) {
   return r;
 }
 
-bool Paired::resolved() const { return std::abs(diff_rel) > ci95_rel; }
+bool Paired::resolved() const {
+  return effect.has_ci() ? effect.resolved() : std::abs(effect.pair_mean_diff_rel) > effect.pair_mean_ci95_rel;
+}
 
 Paired load_paired(const Row& row, int index) {
   Paired p;
@@ -165,14 +167,14 @@ Paired load_paired(const Row& row, int index) {
     p.side_a = j.at("side_a").get<std::string>();
     p.side_b = j.at("side_b").get<std::string>();
     p.case_name = j.value("case", std::string("?"));
-    p.pairs = j.at("pairs").get<int>();
-    p.mean_a_N = j.at("mean_a_N").get<double>();
-    p.mean_b_N = j.at("mean_b_N").get<double>();
-    p.diff_rel = j.at("diff_rel").get<double>();
-    p.ci95_rel = j.at("ci95_rel").get<double>();
-    p.ok = p.pairs >= 2 && std::isfinite(p.diff_rel) && std::isfinite(p.ci95_rel);
+    p.effect = read_ensemble_summary(j);
+    p.pairs = p.effect.pairs;
+    p.ok = p.pairs >= 2 && std::isfinite(p.effect.effect_rel) &&
+           (p.effect.has_ci() || std::isfinite(p.effect.pair_mean_ci95_rel));
     if (!p.ok) p.problem = fmt::format("{}: fewer than 2 pairs or no finite difference", row.run_dir.string());
   } catch (const json::exception& e) {
+    p.problem = fmt::format("{}: {}", row.run_dir.string(), e.what());
+  } catch (const std::invalid_argument& e) {
     p.problem = fmt::format("{}: {}", row.run_dir.string(), e.what());
   }
   return p;

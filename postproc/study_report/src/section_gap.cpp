@@ -18,10 +18,9 @@ std::string candidate_rows(const Study& s) {
                       100.0 * c.ci, c.resolved() ? "" : " (not resolved)", c.run->ref, c.baseline->ref);
   for (const Paired& p : s.paired) {
     if (!p.ok) continue;
-    md += fmt::format("| {}: {} | {}, {} paired packings, {} | {:+.1f} % ± {:.1f} %{} | {} |\n", p.row.param,
-                      md_escape(p.row.value), p.case_name, p.pairs,
-                      md_escape(p.row.label.empty() ? side_model(p.side_b) : p.row.label), 100.0 * p.diff_rel,
-                      100.0 * p.ci95_rel, p.resolved() ? "" : " (not resolved)", p.ref);
+    md += fmt::format("| {}: {} | {}, {} paired packings, {} | {}{} | {} |\n", p.row.param, md_escape(p.row.value),
+                      p.case_name, p.pairs, md_escape(p.row.label.empty() ? side_model(p.side_b) : p.row.label),
+                      effect_cell(p.effect, 1), p.resolved() ? "" : " (not resolved)", p.ref);
   }
   return md.empty() ? "| — | — | no completed sensitivity run with a baseline | — |\n" : md;
 }

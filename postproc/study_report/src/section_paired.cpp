@@ -14,17 +14,17 @@ std::string section_paired(const Study& s, const TextTemplate& text) {
       "### Paired-seed ensembles\n\n" + text.fill("paired.intro") +
       "\n\n"
       "| ensemble | change (parameter: value) | what | case | side A → side B | pairs | mean A / B [N] | "
-      "(B − A) / mean ± CI95 | resolved |\n|---|---|---|---|---|---|---|---|---|\n";
+      "(B − A) / A ± CI95 | resolved |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const Paired& p : s.paired) {
     if (!p.ok) {
       md += fmt::format("| {} | {}: {} | {} | {} | — | — | — | — | **MISSING: {}** |\n", p.ref, p.row.param,
                         md_escape(p.row.value), md_escape(p.row.label), p.row.base_case, md_escape(p.problem));
       continue;
     }
-    md += fmt::format("| {} | {}: {} | {} | {} | `{}` → `{}` | {} | {:.2f} / {:.2f} | {:+.2f} % ± {:.2f} % | {} |\n",
-                      p.ref, p.row.param, md_escape(p.row.value), md_escape(p.row.label), p.case_name,
-                      md_escape(p.side_a), md_escape(p.side_b), p.pairs, p.mean_a_N, p.mean_b_N, 100.0 * p.diff_rel,
-                      100.0 * p.ci95_rel, p.resolved() ? "yes" : "no");
+    md += fmt::format("| {} | {}: {} | {} | {} | `{}` → `{}` | {} | {:.2f} / {:.2f} | {} | {}{} |\n", p.ref,
+                      p.row.param, md_escape(p.row.value), md_escape(p.row.label), p.case_name, md_escape(p.side_a),
+                      md_escape(p.side_b), p.pairs, p.effect.mean_a_N, p.effect.mean_b_N, effect_cell(p.effect),
+                      p.resolved() ? "yes" : "no", p.effect.has_ci() ? "" : " (as recorded)");
   }
   md += "\n" + text.fill("paired.commands") + "\n\n";
   for (const Paired& p : s.paired)

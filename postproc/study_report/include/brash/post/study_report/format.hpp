@@ -29,6 +29,10 @@ std::string status_cell(const Run& r);
 // from its two published numbers (the paper states no ratio for drag; brash::post::published_reference).
 std::string paper_ratio_cell(const brash::ReferenceSpec& paper, const std::string& model);
 
+// A paired ensemble's effect on side A in per cent with PREC decimals: "+8.82 % ± 0.81 %", or for a summary
+// without per-pair values "+8.82 % (CI on A not recomputable; recorded on the pair mean: ± 0.81 %)".
+std::string effect_cell(const EnsembleEffect& e, int prec = 2);
+
 // The fluid model a paired ensemble's side runs ("fluid.model=X" among its edits), else "case default".
 std::string side_model(const std::string& side);
 

@@ -23,6 +23,7 @@
 #include <nlohmann/json.hpp>
 
 #include <brash/case.hpp>
+#include <brash/post/ensemble.hpp>
 #include <brash/post/force_history.hpp>
 
 namespace brash::post::study_report {
@@ -77,8 +78,8 @@ struct Run {  // one run directory (several rows may share it)
 Run load_run(const Row& row, std::string ref);
 
 // A paired-seed ensemble's summary (bench/rank_ensemble.sh: OUT/ensemble-<A>-vs-<B>.json): every packing seed
-// run as side A and as side B, the mean of the paired differences (B - A) / mean of the pair with its
-// 95 % CI.
+// run as side A and as side B, B's effect (B - A) / A with its 95 % CI (brash::post::read_ensemble_summary; an
+// old summary's CI on A is not recomputable).
 struct Paired {
   std::string ref;  // P1, P2, ...
   Row row;
@@ -86,7 +87,8 @@ struct Paired {
   std::string problem;
   std::string side_a, side_b, case_name;
   int pairs = 0;
-  double mean_a_N = NAN, mean_b_N = NAN, diff_rel = NAN, ci95_rel = NAN;
+  EnsembleEffect effect;
+  // the CI on A excludes 0; for an old summary without it, its recorded CI on the pair mean did
   bool resolved() const;
 };
 
