@@ -306,6 +306,11 @@ const KeySpec kContact[] = {
                                                         "in (-1, 0.5)", "Poisson's ratio of the ice"),
     number<&Case::contact, &ContactSpec::restitution>("restitution", [](double e) { return e > 0 && e <= 1; },
                                                       "in (0, 1]", "coefficient of restitution"),
+    number<&Case::contact, &ContactSpec::rolling_friction>(
+        "rolling_friction", non_negative, ">= 0",
+        "rolling resistance mu_r: a torque mu_r R_eff |F_n| against the relative rolling (constant "
+        "directional torque, docs/physics.md); 0 = none; LIGGGHTS and ODE, not YADE",
+        [](const Case& c) { return c.contact.rolling_friction != 0; }),
 };
 
 const KeySpec kFluid[] = {

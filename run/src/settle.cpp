@@ -17,7 +17,7 @@ namespace brash {
 
 std::string settle_inputs(const Case& c) {
   const auto& f = c.fluid;
-  return fmt::format(
+  std::string s = fmt::format(
       "settle_speed_m_s={:.17g} ice_density={:.17g} water={:.17g},{:.17g},{:.17g},{:.17g} friction={:.17g},{:.17g},"
       "{:.17g} contact={:.17g},{:.17g},{:.17g} fluid={},{},{:.17g},{},{} channel={:.17g},{:.17g} dt={:.17g} "
       "skin_d={:.17g}",
@@ -26,6 +26,9 @@ std::string settle_inputs(const Case& c) {
       c.contact.youngs_modulus_pa, c.contact.poisson_ratio, c.contact.restitution, to_string(f.model),
       to_string(f.treatment), f.drag_coefficient, to_string(f.drag_law), to_string(f.ca_table), c.channel.length_m,
       c.channel.width_m, c.run.timestep_s, c.speedups.neighbor_skin_d);
+  // only when on: a bed settled without rolling resistance keeps its file name
+  if (c.contact.rolling_friction != 0) s += fmt::format(" rolling={:.17g}", c.contact.rolling_friction);
+  return s;
 }
 
 fs::path settled_packing_file(const Case& c) {

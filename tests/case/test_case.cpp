@@ -153,6 +153,7 @@ TEST(CaseLoader, DumpThenLoadGivesTheSameCase) {
     c.ship.ice_class = brash::IceClass::IA_super;
     c.ice.packing_mode = brash::PackingMode::StrictTwoLayer;
     c.contact.youngs_modulus_pa *= 1.5;  // a changed value that keeps dt under the Rayleigh limit
+    c.contact.rolling_friction = 0.05;
     c.speedups.farfield = true;
     c.speedups.farfield_ahead_m = 0.7;
     c.speedups.farfield_behind_m = 1.0 / 3.0;
@@ -241,6 +242,18 @@ TEST(CaseLoader, HullFlowDefaultsToStillWaterAndIsRead) {
       brash::load_case(write_case(dir, "name: h\nfluid: {model: drag, hull_flow: thin_ship}\n", "t.yaml"));
   EXPECT_EQ(c.fluid.hull_flow, brash::HullFlow::ThinShip);
   EXPECT_NE(brash::dump_case_yaml(c).find("  hull_flow: thin_ship\n"), std::string::npos);
+}
+
+// contact.rolling_friction: 0 by default, and then not in the resolved case (which stays as it was without the
+// key); a value is read and written back.
+TEST(CaseLoader, RollingFrictionDefaultsToNoneAndIsRead) {
+  const fs::path dir = temp_dir("rolling");
+  const Case d = brash::load_case(write_case(dir, "name: r\n"));
+  EXPECT_EQ(d.contact.rolling_friction, 0.0);
+  EXPECT_EQ(brash::dump_case_yaml(d).find("rolling_friction"), std::string::npos);
+  const Case c = brash::load_case(write_case(dir, "name: r\ncontact: {rolling_friction: 0.05}\n", "t.yaml"));
+  EXPECT_EQ(c.contact.rolling_friction, 0.05);
+  EXPECT_NE(brash::dump_case_yaml(c).find("  rolling_friction: 0.05\n"), std::string::npos);
 }
 
 TEST(CaseLoader, FluidModelDefaultsToDragPlusAddedMass) {
@@ -361,6 +374,7 @@ TEST(CaseLoaderErrors, OtherChecks) {
   expect_error("name: x\nice: {diameter_mean_m: 0.01, diameter_sd_m: 0.005}\n", {"ice.diameter_sd_m"});
   expect_error("name: x\nrun: {timestep_s: 0.1, output_interval_s: 0.01}\n", {"run.timestep_s"});
   expect_error("name: x\ncontact: {poisson_ratio: 0.6}\n", {"contact.poisson_ratio"});
+  expect_error("name: x\ncontact: {rolling_friction: -0.01}\n", {"contact.rolling_friction", ">= 0"});
   expect_error("name: [x\n", {"YAML syntax"});
 }
 

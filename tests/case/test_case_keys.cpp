@@ -40,6 +40,7 @@ TEST(CaseKeys, TheReferenceListsEveryKeyOfTheResolvedCase) {
   const auto reference = reference_by_key();
   brash::Case c = brash::parse_case("name: x\nice: {settle: true}\nchannel: {ends: walls}\n"
                                     "fluid: {hull_flow: panel}\nhull: {band_m: [0.1, 0.1]}\n"
+                                    "contact: {rolling_friction: 0.05}\n"
                                     "fsicr: {alpha_deg: 30, phi1_deg: 30, phi2_deg: 30, psi_deg: 30, L_par_m: 1, "
                                     "L_bow_m: 1, A_wf_m2: 1}\nspeedups: {farfield_beside_m: 0.3}\n"
                                     "references: {source: s, resistance_full_kN: {both: 1}, fsicr_R_CH_kN: 1, "

@@ -566,7 +566,8 @@ TEST(StudyReport, PaperSetUpTableComesFromEachRunsCaseAndMeta) {
   const fs::path d = fresh_dir("setup");
   fs::create_directories(d / "runs/pl");
   fs::create_directories(d / "runs/po");
-  std::ofstream(d / "runs/pl/case.yaml") << "name: jbc_ia_5kn\ncontact: {youngs_modulus_pa: 3.125e5}\n"
+  std::ofstream(d / "runs/pl/case.yaml") << "name: jbc_ia_5kn\ncontact: {youngs_modulus_pa: 3.125e5, "
+                                            "rolling_friction: 0.05}\n"
                                             "ice: {settle: true}\n"
                                             "speedups: {farfield: true, farfield_wake_force_weight: 0, "
                                             "moving_window: true}\n";
@@ -602,8 +603,8 @@ TEST(StudyReport, PaperSetUpTableComesFromEachRunsCaseAndMeta) {
   EXPECT_NE(md.find("| R1 | paper am | liggghts | added_mass |"), std::string::npos) << md;
   EXPECT_NE(md.find("| R2 | paper ode | ode | drag |"), std::string::npos) << md;
   EXPECT_NE(
-      t.find("| Hertz-Mindlin, E = 3.125e+05 Pa, ν = 0.3, e = 0.3 | ODE rigid, contact joints (ERP 0.2, CFM "
-             "1e-05, 20 iterations) |"),
+      t.find("| Hertz-Mindlin, E = 3.125e+05 Pa, ν = 0.3, e = 0.3, rolling resistance μ_r = 0.05 | ODE rigid, "
+             "contact joints (ERP 0.2, CFM 1e-05, 20 iterations) |"),
       std::string::npos)
       << t;
   EXPECT_NE(t.find("| time step | not stated | 0.0004 s | 0.001 s |"), std::string::npos) << t;

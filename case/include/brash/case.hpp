@@ -119,6 +119,9 @@ struct ContactSpec {
   double youngs_modulus_pa = 5.0e6;
   double poisson_ratio = 0.3;
   double restitution = 0.3;
+  // Rolling resistance mu_r (dimensionless): a constant torque mu_r R_eff |F_n| against the contact's relative
+  // rolling (docs/physics.md, "Rolling resistance"); 0 = none, the contact model without it.
+  double rolling_friction = 0.0;
   bool operator==(const ContactSpec&) const = default;
 };
 

@@ -59,5 +59,10 @@ double heave_period(double r, double rho_i, double rho_w, double g, double ca_z)
   return 2 * std::numbers::pi * std::sqrt((m + m_a) / (rho_w * g * a_wp));
 }
 
+double rolling_deceleration(double mu_r, double g) {
+  constexpr double inertia_over_m_r2 = 2.0 / 5.0;  // solid sphere
+  return mu_r * g / (1 + inertia_over_m_r2);
+}
+
 }  // namespace analytic
 }  // namespace brash::core

@@ -97,8 +97,32 @@ std::string material_lines(const Case& c, bool symmetry_y) {
         "{5:g} {4:g} {5:g} 0 0 0 0 0\n",
         c.contact.youngs_modulus_pa, c.contact.poisson_ratio, e, f.ice_ice, f.ice_hull, f.ice_wall);
   }
+  // rolling resistance (contact.rolling_friction): every pair of ice, hull and walls alike, none on the symmetry
+  // plane (a mirror, as its friction); without it the deck is the one of the model without rolling resistance
+  if (const double mu_r = c.contact.rolling_friction; mu_r != 0)
+    s += symmetry_y ? fmt::format("fix m5 all property/global coefficientRollingFriction peratomtypepair 4 {0:g} {0:g} "
+                                  "{0:g} 0 {0:g} {0:g} {0:g} 0 {0:g} {0:g} {0:g} 0 0 0 0 0\n",
+                                  mu_r)
+                    : fmt::format("fix m5 all property/global coefficientRollingFriction peratomtypepair 3 {0:g} {0:g} "
+                                  "{0:g} {0:g} {0:g} {0:g} {0:g} {0:g} {0:g}\n",
+                                  mu_r);
   return s;
 }
+
+}  // namespace
+
+std::string granular_model(const Case& c) {
+  // rolling_friction cdt: LIGGGHTS' constant directional torque, M_r = -mu_r R_eff |F_n| w_r / |w_r| (w_r the
+  // relative rotation without its part along the normal; R_eff = R_i R_j / (R_i + R_j), a wall's contact R_i)
+  return c.contact.rolling_friction != 0 ? "model hertz tangential history rolling_friction cdt"
+                                         : "model hertz tangential history";
+}
+
+std::string contact_lines(const Case& c, bool symmetry_y) {
+  return material_lines(c, symmetry_y) + "pair_style gran " + granular_model(c) + "\npair_coeff * *\n";
+}
+
+namespace {
 
 // the scene's opening lines up to and including read_data (or read_restart)
 std::string opening_lines(const Case& c, const std::string& read_line, int ranks) {
@@ -116,18 +140,17 @@ std::string opening_lines(const Case& c, const std::string& read_line, int ranks
   return s + read_line + "\n";
 }
 
-constexpr const char* kWall = "wall/gran model hertz tangential history primitive";
-
 // the channel's walls of the walls' material (type 3): at y = +-width/2 (at y = 0 the symmetry plane, type 4,
 // instead of the one at -width/2) and, with end walls, at x = 0 and x = length
 std::string wall_lines(const Case& c, bool symmetry_y, bool end_walls) {
+  const std::string wall = "wall/gran " + granular_model(c) + " primitive";
   std::string s =
-      symmetry_y ? fmt::format("fix sides all {} type 4 yplane 0\n", kWall)
-                 : fmt::format("fix sides all {} type 3 yplane {:.9g}\n", kWall, -0.5 * c.channel.width_m);
-  s += fmt::format("fix sides2 all {} type 3 yplane {:.9g}\n", kWall, 0.5 * c.channel.width_m);
+      symmetry_y ? fmt::format("fix sides all {} type 4 yplane 0\n", wall)
+                 : fmt::format("fix sides all {} type 3 yplane {:.9g}\n", wall, -0.5 * c.channel.width_m);
+  s += fmt::format("fix sides2 all {} type 3 yplane {:.9g}\n", wall, 0.5 * c.channel.width_m);
   // the hull's mesh is not a particle: it passes through the end walls
   if (end_walls)
-    s += fmt::format("fix end0 all {0} type 3 xplane 0\nfix end1 all {0} type 3 xplane {1:.9g}\n", kWall,
+    s += fmt::format("fix end0 all {0} type 3 xplane 0\nfix end1 all {0} type 3 xplane {1:.9g}\n", wall,
                      c.channel.length_m);
   return s;
 }
@@ -161,8 +184,7 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
   const double skin_m = sp.neighbor_skin_d * c.ice.diameter_mean_m;
   s += fmt::format("neighbor {:.6g} bin\nneigh_modify delay 0{}\n", skin_m,
                    sp.farfield ? " exclude group idle idle" : "");
-  s += material_lines(c, sp.symmetry_y);
-  s += "pair_style gran model hertz tangential history\npair_coeff * *\n";
+  s += contact_lines(c, sp.symmetry_y);
   s += fmt::format("timestep {:.9g}\n", dt);
   // Hull: STL frame has the keel at z = 0 and x = 0 at the aft perpendicular.
   const double hull_x0 = c.hull.start_x_m;
@@ -172,8 +194,8 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
                    "reference_point 0 0 0\n",
                    opt.hull_file, hull_x0, -c.hull.draft_m);
   // store_force_contact_stress: each hull contact's force and contact vector, per piece, for fix brash/hullsplit
-  s += "fix hullwall all wall/gran model hertz tangential history mesh n_meshes 1 meshes hull "
-       "store_force_contact_stress yes\n";
+  s += "fix hullwall all wall/gran " + granular_model(c) +
+       " mesh n_meshes 1 meshes hull store_force_contact_stress yes\n";
   s += wall_lines(c, sp.symmetry_y, c.channel.ends == ChannelEnds::Walls);
   s += fmt::format("fix mv all move/mesh mesh hull linear {:.9g} 0 0\n", c.ship.speed_m_s);
   if (sp.farfield) {
@@ -266,8 +288,7 @@ std::string settle_script(const Case& c, const Box& box, long chunk_steps, long 
   std::string s = "# brash: settling deck written by brash-settle for case " + c.name + "\n";
   s += opening_lines(c, "read_data packing.data", 1);
   s += fmt::format("neighbor {:.6g} bin\nneigh_modify delay 0\n", skin_m);
-  s += material_lines(c, false);
-  s += "pair_style gran model hertz tangential history\npair_coeff * *\n";
+  s += contact_lines(c, false);
   s += fmt::format("timestep {:.9g}\n", c.run.timestep_s);
   s += wall_lines(c, false, true);  // closed: the bed must not spread through open ends while it settles
   s += "fix integr all nve/sphere\n";

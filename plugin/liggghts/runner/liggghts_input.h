@@ -50,6 +50,13 @@ std::string data_file(const std::vector<Sphere>& spheres, const Box& box, double
 std::vector<Sphere> half_channel_spheres(const std::vector<Sphere>& spheres);
 hull::Mesh half_hull(const hull::Mesh& mesh);
 
+// The granular model of every contact (pair gran, wall/gran): Hertz with tangential history, and with
+// contact.rolling_friction > 0 LIGGGHTS' constant directional torque (rolling_friction cdt).
+std::string granular_model(const Case& c);
+// The material lines (fix property/global of types 1 ice, 2 hull, 3 walls, 4 the symmetry plane with
+// symmetry_y) and the pair style of a case.
+std::string contact_lines(const Case& c, bool symmetry_y);
+
 // The input script; outputs (relative to the run dir): hull_force.raw, particles/dump.*.txt, restart/.
 std::string input_script(const Case& c, const Box& box, const SceneOptions& opt);
 

@@ -76,7 +76,10 @@ nlohmann::json OdeEngine::meta() const {
       {"threads", 1},
       {"stepper", {{"quickstep_iterations", st.iterations}, {"erp", st.erp}, {"cfm", st.cfm},
                    {"contact_surface_layer_m", st.contact_surface_layer}, {"max_contacts_per_pair", st.max_contacts_per_pair},
-                   {"angular_damping", st.angular_damping}, {"contact", "dContactApprox1"},
+                   {"angular_damping", st.angular_damping},
+                   {"contact", scene_->c.contact.rolling_friction != 0 ? "dContactApprox1 | dContactRolling | "
+                                                                         "dContactAxisDep"
+                                                                       : "dContactApprox1"},
                    {"broad_phase", st.broad_phase == BroadPhase::Sap ? "ODE sweep and prune (xyz)" : "grid (brash)"}}},
       {"skips", {{"auto_disable", k.auto_disable}, {"auto_disable_far_only", k.auto_disable_far_only},
                  {"disable_linear_m_s", k.disable_linear_m_s}, {"disable_angular_rad_s", k.disable_angular_rad_s},
@@ -225,9 +228,9 @@ void Stepping::log(const std::string& line) {
 }
 
 void Stepping::build_world() {
-  w_ = std::make_unique<World>(fluid_params(c_), s_.stepper,
-                               Frictions{c_.friction.ice_ice, c_.friction.ice_hull, c_.friction.ice_wall}, s_.skips,
-                               s_.implicit);
+  const Frictions frictions{c_.friction.ice_ice, c_.friction.ice_hull, c_.friction.ice_wall,
+                            c_.contact.rolling_friction};
+  w_ = std::make_unique<World>(fluid_params(c_), s_.stepper, frictions, s_.skips, s_.implicit);
   // by default in a spatial order (cells of two mean diameters): ODE's bodies, and its contact rows, then sit
   // in memory as in space; ids in every output are the packing's (order_)
   std::vector<Vec3> centres;

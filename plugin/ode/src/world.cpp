@@ -403,6 +403,10 @@ void World::collide_tagged(dGeomID a, std::size_t ta, dGeomID b, std::size_t tb)
   else if (sb) mu = friction_.ice_ice;
   const int n = dCollide(a, b, static_cast<int>(contact_buf_.size()), &contact_buf_[0].geom, sizeof(dContact));
   if (n <= 0) return;
+  // ODE bounds the rolling torque by rho |F_n|: rho = mu_r R_eff (a length) gives LIGGGHTS' constant directional
+  // torque mu_r R_eff |F_n|, with its R_eff (R_a R_b / (R_a + R_b); the sphere's radius against the hull or a wall)
+  const double r_eff_m = sb ? sa.radius_m * sb->radius_m / (sa.radius_m + sb->radius_m) : sa.radius_m;
+  const double rolling_rho_m = friction_.rolling * r_eff_m;
   // A sleeping sphere touched by an awake one or by the hull wakes up (ode.md §3); a culled one stays a
   // static obstacle (its side of the joint is the static environment, 0) until the wake rule wakes it.
   dBodyID ba = sa.culled ? nullptr : sa.body;
@@ -429,6 +433,15 @@ void World::collide_tagged(dGeomID a, std::size_t ta, dGeomID b, std::size_t tb)
     c.surface.mode = dContactApprox1;
     c.surface.mu = mu;
     c.surface.bounce = 0;
+    if (rolling_rho_m > 0) {
+      // rolling resistance about both tangent axes, none about the normal (spinning), as LIGGGHTS' CDT: that takes
+      // axis-dependent coefficients (without dContactAxisDep ODE gives the spin rho too), so mu2 = mu keeps the
+      // sliding friction as it is; dContactApprox1 makes the rolling bounds rho |F_n|, as the friction's mu |F_n|
+      c.surface.mode |= dContactRolling | dContactAxisDep;
+      c.surface.mu2 = mu;
+      c.surface.rho = c.surface.rho2 = rolling_rho_m;
+      c.surface.rhoN = 0;
+    }
     pending_.push_back(PendingContact{ia - 1, key, i, ba, bb, hull, c, idle});
   }
   contacts_this_step_ += static_cast<std::size_t>(n);

@@ -59,6 +59,13 @@ void YadeEngine::load(const Case& c, const fs::path& /*case_file*/, const std::v
     throw InputError(fmt::format("fluid.hull_flow: {} is implemented on LIGGGHTS and ODE (brash-liggghts-run, "
                                  "brash-ode); brash-yade-run runs in still water (hull_flow: none)",
                                  to_string(c.fluid.hull_flow)));
+  // YADE's own rolling law (Law2_ScGeom_MindlinPhys_Mindlin with includeMoment) caps the torque at
+  // eta (R_a + R_b) / 2 |F_n|, one eta for every pair: the mean radius, not LIGGGHTS' and ODE's
+  // R_a R_b / (R_a + R_b), so an ice-ice contact would get twice their torque or more (docs/physics.md)
+  if (c.contact.rolling_friction != 0)
+    throw InputError(fmt::format("contact.rolling_friction: {} is implemented on LIGGGHTS and ODE (brash-liggghts-run, "
+                                 "brash-ode); brash-yade-run has no rolling resistance (rolling_friction: 0)",
+                                 c.contact.rolling_friction));
   case_ = c;
   particles_ = spheres.size();
   full_mesh_ = hull::read_mesh(c.hull.file);

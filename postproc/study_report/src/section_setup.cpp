@@ -25,6 +25,12 @@ struct Column {  // one started paper-case run
   bool old_ode() const { return ode() && meta->contains("ode_options"); }
 };
 
+// the contact model's rolling resistance (docs/physics.md), named only when a run has it
+std::string rolling(const Column& col) {
+  const double mu_r = col.c->contact.rolling_friction;
+  return mu_r != 0 ? fmt::format(", rolling resistance μ_r = {}", mu_r) : std::string();
+}
+
 std::string our_contacts(const Column& col) {
   if (col.old_ode()) {
     const json o = col.ode_options();
@@ -32,11 +38,11 @@ std::string our_contacts(const Column& col) {
                        o.value("cfm", NAN), o.value("iterations", 0));
   }
   if (col.ode())
-    return fmt::format("ODE rigid, contact joints (ERP {}, CFM {}, {} iterations)", col.c->ode.erp, col.c->ode.cfm,
-                       col.c->ode.iterations);
+    return fmt::format("ODE rigid, contact joints (ERP {}, CFM {}, {} iterations){}", col.c->ode.erp, col.c->ode.cfm,
+                       col.c->ode.iterations, rolling(col));
   const auto& contact = col.c->contact;
-  return fmt::format("Hertz-Mindlin, E = {:.4g} Pa, ν = {}, e = {}", contact.youngs_modulus_pa, contact.poisson_ratio,
-                     contact.restitution);
+  return fmt::format("Hertz-Mindlin, E = {:.4g} Pa, ν = {}, e = {}{}", contact.youngs_modulus_pa,
+                     contact.poisson_ratio, contact.restitution, rolling(col));
 }
 
 std::string our_time_step(const Column& col) {

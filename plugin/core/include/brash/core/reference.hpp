@@ -44,6 +44,10 @@ struct Rise {
 Rise rise(double r, double rho_i, double rho_w, double g, double cd, double ca_z);
 // Linearised heave period about floating equilibrium, Ca_z the added-mass coefficient there.
 double heave_period(double r, double rho_i, double rho_w, double g, double ca_z_at_equilibrium);
+// A solid sphere (I = 2/5 m R^2) rolling without slip on a level wall in air, with a constant rolling torque
+// mu_r R m g against its rolling (contact.rolling_friction, the wall's R_eff = R): its deceleration
+// a = mu_r g / (1 + I / (m R^2)) = 5/7 mu_r g (docs/physics.md, "Rolling resistance").
+double rolling_deceleration(double mu_r, double g);
 }  // namespace analytic
 
 }  // namespace brash::core

@@ -8,7 +8,7 @@
 //      (see "Implicit added mass in ODE" below; composed by brash/core/added_mass.hpp);
 //      state = advance(state, v(n)).
 //   2. collide: broad phase (our x-y grid, or ODE's sweep-and-prune), contact joints (dContactApprox1,
-//      Coulomb mu per pair type, sphere body first).
+//      Coulomb mu per pair type, sphere body first; with Frictions::rolling also dContactRolling).
 //   3. dWorldQuickStep (semi-implicit Euler: v(n+1) = v(n) + dt (G + F_contact) / M,
 //      x(n+1) = x(n) + dt v(n+1)).
 //   4. hull force = -sum fb.f1 over the hull contacts (feedback read after the step, before emptying
@@ -77,6 +77,11 @@ struct Frictions {
   double ice_ice = 1.35;
   double ice_hull = 0.1;
   double ice_wall = 1.35;
+  // Rolling resistance mu_r (contact.rolling_friction), every pair type alike. 0: contacts without it, as
+  // before it existed. Otherwise each contact gets ODE's rolling friction (dContactRolling) with
+  // rho = mu_r R_eff: a torque of at most rho |F_n| about each tangent axis that stops the relative rolling
+  // (R_eff = R_a R_b / (R_a + R_b) for two spheres, the sphere's R against the hull or a wall; world.cpp).
+  double rolling = 0;
 };
 
 // Skips (each with a switch; effect measured in docs/ode.md).
