@@ -214,9 +214,9 @@ IceAroundHull analyze_ice_around_hull(const std::vector<SnapshotEntry>& entries,
       r.triangle_pressure_Pa[t] = tri_area[t] > 0 ? tri_push[t] / (n * tri_area[t]) : 0.0;
   } else {
     r.pressure_missing =
-        "the particle snapshots carry no force of each piece on the hull (columns hull_fx_N, hull_fy_N, hull_fz_N; "
-        "no engine writes them yet: LIGGGHTS keeps each hull contact's force in fix wall/gran's "
-        "store_force_contact_stress, the dump does not write it), so hull.vtu holds the touched share alone";
+        "the particle snapshots carry no force of each piece on the hull (columns hull_fx_N, hull_fy_N, hull_fz_N: "
+        "LIGGGHTS runs write them; brash-ode, YADE and LIGGGHTS runs from before them do not), so hull.vtu holds the "
+        "touched share alone";
   }
   return r;
 }

@@ -434,12 +434,14 @@ std::string ice_around_markdown(const RunAnalysis& a) {
                     "| FSICR's H_F = 0.26 m + (B H_M)^0.5, / lambda | {} |\n"
                     "| FSICR's H_M of the ice class, / lambda | {} |\n",
                     r.band_m, r.H_F_measured_m, fsicr(r.H_F_fsicr_model_m), fsicr(r.H_M_model_m));
-  const auto labels = split_part_labels(a.meta);
+  RunMeta regions = a.meta;  // the regions this section used (meta.json's hull_split, else measured on the hull)
+  if (std::isfinite(r.x_par_m[0]) && std::isfinite(r.x_par_m[1])) regions.hull_split_par_m = r.x_par_m;
+  const auto labels = split_part_labels(regions);
   for (std::size_t k = 0; k < kHullRegions.size(); ++k)
-    md += fmt::format("| wetted hull touched by ice: {} | {:.1f} % of {:.3g} m^2 |\n", labels[k],
+    md += fmt::format("| wetted hull touched by ice: {} | {:.3g} % of {:.3g} m^2 |\n", labels[k],
                       100 * r.contact_fraction[k], r.wetted_area_m2[k]);
-  md += fmt::format("| wetted hull touched by ice: all | {:.1f} % of {:.3g} m^2 |\n"
-                    "| pieces touching the hull (per snapshot) | {:.1f}, {:.1f} % of them on the bottom |\n"
+  md += fmt::format("| wetted hull touched by ice: all | {:.3g} % of {:.3g} m^2 |\n"
+                    "| pieces touching the hull (per snapshot) | {:.1f}, {:.3g} % of them on the bottom |\n"
                     "| deepest touching piece's bottom below the waterline | {:.4f} m mean, {:.4f} m max (draft "
                     "{:.4f} m) |\n"
                     "| pieces below the keel within the hull's plan (per snapshot) | {:.2f}, deepest {:.4f} m below "
