@@ -145,7 +145,7 @@ IceAroundHull analyze_ice_around_hull(const std::vector<SnapshotEntry>& entries,
     if (e.t_s < window_s[0] - 1e-9 || e.t_s > window_s[1] + 1e-9 || !std::filesystem::exists(e.file)) continue;
     const Snapshot s = read_snapshot(e, run_in_progress);
     ++r.snapshots;
-    forces = forces && !s.hull_fx_N.empty();
+    forces = forces && s.with_hull_force;
     std::array<double, 3> cover{};
     double deepest = 0;
     for (std::size_t i = 0; i < s.size(); ++i) {

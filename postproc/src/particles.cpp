@@ -108,6 +108,7 @@ Snapshot read_snapshot(const std::filesystem::path& path, bool run_in_progress, 
     s.state.push_back(static_cast<std::uint8_t>(state));
   });
   s.tail_dropped = scan.tail_dropped;
+  s.with_hull_force = with_force;
   if (with_state && pieces == Pieces::Scene) keep_scene_pieces(s);
   return s;
 }

@@ -25,8 +25,9 @@ struct Snapshot {
   std::vector<double> x, y, z, radius, vx, vy, vz, submerged_fraction, ca_x, ca_y, ca_z;
   std::vector<std::uint8_t> active;  // 1 integrated, 0 idle; empty when the file has no active column
   std::vector<std::uint8_t> state;   // kScene, kHeldOut, kRemoved; empty when the file has no state column
-  // the force of each piece on the hull [N]; empty when the file has no hull_f*_N columns
+  // the force of each piece on the hull [N]; empty when the file has no hull_f*_N columns (with_hull_force false)
   std::vector<double> hull_fx_N, hull_fy_N, hull_fz_N;
+  bool with_hull_force = false;
   std::size_t size() const { return id.size(); }
   bool tail_dropped = false;
 };
