@@ -173,6 +173,7 @@ TEST(IceAroundHull, ThicknessProfileOfKnownLayers) {
   for (const auto& b : r.beside) EXPECT_NEAR(b.thickness_m, 0.01, 1e-9) << b.from_m;
   EXPECT_NEAR(r.beside.front().from_m, 0.0, 1e-12);
   EXPECT_NEAR(r.beside.back().to_m, 1.0, 1e-12);
+  fs::remove_all(dir);
 }
 
 TEST(IceAroundHull, ContactShareDepthAndPressureOfKnownLayers) {
@@ -215,10 +216,13 @@ TEST(IceAroundHull, ContactShareDepthAndPressureOfKnownLayers) {
   EXPECT_NEAR(cover, covered, 1e-12);
   EXPECT_NEAR(bow_push, 60.0, 1e-9);
   EXPECT_NEAR(bottom_push, 2.0, 1e-9);
+  fs::remove_all(dir);
 }
 
 TEST(IceAroundHull, NoHullForcesNoPressureField) {
-  const auto r = analyze(make_run("noforce", false));
+  const auto dir = make_run("noforce", false);
+  const auto r = analyze(dir);
+  fs::remove_all(dir);
   EXPECT_TRUE(r.triangle_pressure_Pa.empty());
   EXPECT_NE(r.pressure_missing.find("hull_fx_N"), std::string::npos) << r.pressure_missing;
   EXPECT_FALSE(r.triangle_contact_fraction.empty());
@@ -252,6 +256,7 @@ TEST(IceAroundHull, ReportSectionJsonAndHullField) {
   for (vtkIdType i = 0; i < 12; ++i) max_p = std::max(max_p, p->GetTuple1(i));
   EXPECT_GT(max_p, 0.0);
 #endif
+  fs::remove_all(dir);
 }
 
 // Old runs: no hull forces in the snapshots, no snapshots at all, no hull mesh: the section says what is missing
@@ -281,6 +286,6 @@ TEST(IceAroundHull, ReportSaysWhatIsMissing) {
   const auto k = report_of(nohull)["ice_around_hull"];
   ASSERT_TRUE(k.contains("not_available")) << k.dump();
   EXPECT_NE(k["not_available"].get<std::string>().find("hull mesh could not be read"), std::string::npos);
-  // its snapshots at 20 and 40 s lie in the window, the first at 0 s does not
   EXPECT_NE(markdown_of(nohull).find("Not available: the hull mesh could not be read"), std::string::npos);
+  for (const auto& d : {noforce, none, nohull}) fs::remove_all(d);
 }
