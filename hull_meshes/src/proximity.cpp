@@ -143,8 +143,14 @@ std::array<long, 3> Proximity::cell_of(const Vector3d& p) const {
 }
 
 double Proximity::distance(const Vector3d& p, double max_distance_m) const {
+  return nearest(p, max_distance_m).distance_m;
+}
+
+Proximity::Nearest Proximity::nearest(const Vector3d& p, double max_distance_m) const {
   const auto c0 = cell_of(p);
   double best2 = std::numeric_limits<double>::infinity();
+  int best_tri = -1;
+  Vector3d best_point = Vector3d::Zero();
   const long kmax = std::max({n_[0], n_[1], n_[2]});
   for (long k = 0; k <= kmax; ++k) {
     std::array<long, 3> lo{}, hi{};
@@ -154,7 +160,10 @@ double Proximity::distance(const Vector3d& p, double max_distance_m) const {
       const long c = cell_index(i, j, kk);
       for (std::size_t s = start_[c]; s < start_[c + 1]; ++s) {
         const Tri& t = tri_[ids_[s]];
-        best2 = std::min(best2, (closest_point_on_triangle(p, t.a, t.b, t.c) - p).squaredNorm());
+        const Vector3d q = closest_point_on_triangle(p, t.a, t.b, t.c);
+        // ties (an edge two triangles share) go to the lower index, whichever cell is searched first
+        if (const double d2 = (q - p).squaredNorm(); d2 < best2 || (d2 == best2 && ids_[s] < best_tri))
+          best2 = d2, best_tri = ids_[s], best_point = q;
       }
     };
     for (long kk = lo[2]; kk <= hi[2]; ++kk)
@@ -176,7 +185,8 @@ double Proximity::distance(const Vector3d& p, double max_distance_m) const {
     if (!std::isfinite(bound) || best2 <= bound * bound || bound > max_distance_m) break;
   }
   const double d = std::sqrt(best2);
-  return d <= max_distance_m ? d : std::numeric_limits<double>::infinity();
+  if (!(d <= max_distance_m)) return {};
+  return {d, best_tri, best_point};
 }
 
 bool Proximity::vertical_crossing(const Tri& t, double x, double y, double& z) const {

@@ -195,6 +195,23 @@ int run_report(const fs::path& run_dir, const ReportOptions& opt) {
       return std::vector<fs::path>{};
     });
   }
+#ifdef BRASH_POST_HAVE_ICE_AROUND_HULL
+  ok &= step(a, outputs, "the ice around the hull", [&] {
+    add_ice_around_hull(a, entries);
+    std::vector<fs::path> files;
+    if (!a.ice_around) return files;
+    if (opt.plots) files.push_back(plot_ice_around_hull(a, run_dir, work));
+#ifdef BRASH_POST_HAVE_VTK
+    if (opt.paraview)
+      if (const auto hull = load_case_hull(a.case_, a.notes))
+        files.push_back(write_hull_contact_field(run_dir, *hull, a.ice_around->triangle_contact_fraction,
+                                                 a.ice_around->triangle_pressure_Pa));
+#endif
+    return files;
+  });
+#else
+  a.ice_around_missing = "brash-post was built without the hull library (brash_hull)";
+#endif
 #ifdef BRASH_POST_HAVE_VTK
   if (opt.paraview && !entries.empty()) {
     ok &= step(a, outputs, "ParaView output", [&] {

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkCellType.h>
 #include <vtkDoubleArray.h>
 #include <vtkIdTypeArray.h>
@@ -82,7 +83,7 @@ void write_particles(const Snapshot& s, const fs::path& path) {
   write_grid(g, path);
 }
 
-void write_hull(const HullSurface& h, double dx, double dz, const fs::path& path) {
+vtkNew<vtkUnstructuredGrid> hull_grid(const HullSurface& h, double dx, double dz) {
   vtkNew<vtkPoints> pts;
   pts->SetDataTypeToDouble();
   const auto nv = h.xyz.size() / 3;
@@ -97,7 +98,11 @@ void write_hull(const HullSurface& h, double dx, double dz, const fs::path& path
   vtkNew<vtkUnstructuredGrid> g;
   g->SetPoints(pts);
   g->SetCells(VTK_TRIANGLE, cells);
-  write_grid(g, path);
+  return g;
+}
+
+void write_hull(const HullSurface& h, double dx, double dz, const fs::path& path) {
+  write_grid(hull_grid(h, dx, dz), path);
 }
 
 }  // namespace
@@ -119,6 +124,24 @@ std::optional<HullSurface> load_case_hull(const PostCase& c, std::vector<std::st
   notes.push_back("ParaView: no hull series (brash_hull not built in)");
   return std::nullopt;
 #endif
+}
+
+fs::path write_hull_contact_field(const fs::path& run_dir, const HullSurface& hull,
+                                  const std::vector<double>& contact_fraction,
+                                  const std::vector<double>& contact_pressure_Pa) {
+  auto g = hull_grid(hull, 0, 0);
+  const auto add = [&](const char* name, const std::vector<double>& v) {
+    if (v.empty()) return;
+    auto a = array(name, 1, v.size());
+    for (std::size_t i = 0; i < v.size(); ++i) a->SetValue(static_cast<vtkIdType>(i), v[i]);
+    g->GetCellData()->AddArray(a);
+  };
+  add("contact_fraction", contact_fraction);
+  add("contact_pressure_Pa", contact_pressure_Pa);
+  g->GetCellData()->SetActiveScalars(contact_pressure_Pa.empty() ? "contact_fraction" : "contact_pressure_Pa");
+  const auto path = run_dir / "hull.vtu";
+  write_grid(g, path);
+  return path;
 }
 
 std::string pvd_text(const std::vector<std::pair<double, std::string>>& items) {

@@ -49,6 +49,8 @@ void keep_scene_pieces(Snapshot& s) {
     s.id[n] = s.id[i];
     s.active[n] = s.active[i];
     s.state[n] = s.state[i];
+    if (!s.hull_fx_N.empty())
+      for (auto* c : {&s.hull_fx_N, &s.hull_fy_N, &s.hull_fz_N}) (*c)[n] = (*c)[i];
     ++n;
   }
   for (auto* c : {&s.x, &s.y, &s.z, &s.radius, &s.vx, &s.vy, &s.vz, &s.submerged_fraction, &s.ca_x, &s.ca_y, &s.ca_z})
@@ -56,6 +58,8 @@ void keep_scene_pieces(Snapshot& s) {
   s.id.resize(n);
   s.active.resize(n);
   s.state.resize(n);
+  if (!s.hull_fx_N.empty())
+    for (auto* c : {&s.hull_fx_N, &s.hull_fy_N, &s.hull_fz_N}) c->resize(n);
 }
 
 }  // namespace
@@ -63,14 +67,20 @@ void keep_scene_pieces(Snapshot& s) {
 Snapshot read_snapshot(const std::filesystem::path& path, bool run_in_progress, Pieces pieces) {
   // YADE's files and those of older runs end at ca_z; LIGGGHTS' and ODE's have the active column, LIGGGHTS' with
   // the moving window the state column too
+  // (and, where the engine writes them, each piece's force on the hull last)
   static constexpr std::array<std::string_view, 14> kHeader{
       "id", "x", "y", "z", "radius", "vx", "vy", "vz", "submerged_fraction", "ca_x", "ca_y", "ca_z", "active", "state"};
+  static constexpr std::string_view kHullForce = ",hull_fx_N,hull_fy_N,hull_fz_N";
   const auto text = read_text_file(path);
   auto first_line = std::string_view(text).substr(0, text.find('\n'));
   if (first_line.ends_with('\r')) first_line.remove_suffix(1);
+  const bool with_force = first_line.ends_with(kHullForce);
+  if (with_force) first_line.remove_suffix(kHullForce.size());
   const bool with_state = first_line.ends_with(",active,state");
   const bool with_active = with_state || first_line.ends_with(",active");
-  const auto header = std::span(kHeader).first(with_state ? 14 : with_active ? 13 : 12);
+  const std::size_t n_base = with_state ? 14 : with_active ? 13 : 12;
+  std::vector<std::string_view> header(kHeader.begin(), kHeader.begin() + static_cast<std::ptrdiff_t>(n_base));
+  if (with_force) header.insert(header.end(), {"hull_fx_N", "hull_fy_N", "hull_fz_N"});
   Snapshot s;
   std::array<std::vector<double>*, 11> cols{&s.x, &s.y, &s.z, &s.radius, &s.vx, &s.vy, &s.vz,
                                             &s.submerged_fraction, &s.ca_x, &s.ca_y, &s.ca_z};
@@ -80,6 +90,10 @@ Snapshot read_snapshot(const std::filesystem::path& path, bool run_in_progress, 
     s.id.push_back(static_cast<std::int64_t>(id));
     for (std::size_t c = 0; c < cols.size(); ++c) cols[c]->push_back(parse_finite(f[c + 1], path, line, kHeader[c + 1]));
     if (s.radius.back() <= 0) throw InputError(fmt::format("{}:{}: column 'radius': must be > 0", path.string(), line));
+    if (with_force)
+      for (std::size_t c = 0; c < 3; ++c)
+        (c == 0 ? s.hull_fx_N : c == 1 ? s.hull_fy_N : s.hull_fz_N)
+            .push_back(parse_finite(f[n_base + c], path, line, header[n_base + c]));
     if (!with_active) return;
     const double active = parse_finite(f[12], path, line, kHeader[12]);
     if (active != 0 && active != 1)
@@ -94,6 +108,7 @@ Snapshot read_snapshot(const std::filesystem::path& path, bool run_in_progress, 
     s.state.push_back(static_cast<std::uint8_t>(state));
   });
   s.tail_dropped = scan.tail_dropped;
+  s.with_hull_force = with_force;
   if (with_state && pieces == Pieces::Scene) keep_scene_pieces(s);
   return s;
 }

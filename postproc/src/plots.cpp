@@ -148,6 +148,40 @@ plot {} using 1:3:5:xtic(2) with boxes lc palette, \
   return render(out_dir / "resistance_full_scale.png", work_dir, "resistance_bars", body, 900, 600);
 }
 
+fs::path plot_ice_around_hull(const RunAnalysis& a, const fs::path& out_dir, const fs::path& work_dir) {
+  fs::create_directories(work_dir);
+  const auto& r = a.ice_around.value();
+  const auto data = work_dir / "ice_around_hull.dat";
+  // two blocks: ahead (distance ahead of the stem, band centre), beside (hull-frame x, band centre)
+  std::string d = "# ahead_m thickness_m\n";
+  for (const auto& b : r.ahead) d += fmt::format("{} {}\n", 0.5 * (b.from_m + b.to_m), b.thickness_m);
+  d += "\n\n# x_m thickness_m\n";
+  for (const auto& b : r.beside) d += fmt::format("{} {}\n", 0.5 * (b.from_m + b.to_m), b.thickness_m);
+  brash::run::write_atomic(data, d);
+  const std::string hf = r.H_F_fsicr_model_m
+                             ? fmt::format("{0} with lines lw 2 dt 2 lc rgb '#c0392b' title sprintf(\"FSICR H_F / "
+                                           "lambda = %.4f m\", {0}), ",
+                                           *r.H_F_fsicr_model_m)
+                             : std::string();
+  const std::string bed = fmt::format("{0} with lines lw 1 dt 3 lc rgb '#555555' title sprintf(\"ice.thickness_m "
+                                      "= %.4f m\", {0})",
+                                      r.ice_thickness_m);
+  const std::string body = fmt::format(R"(set multiplot layout 1,2 title 'Brash thickness around the hull over the window [{:.2f}, {:.2f}] s ({} snapshots), model scale'
+set grid
+set key top right
+set yrange [0:*]
+set ylabel 'thickness: ice volume per area / (1 - porosity) [m]'
+set xlabel 'distance ahead of the stem [m] (over the beam)'
+set title 'ahead of the bow'
+plot {} index 0 using 1:2 with linespoints lw 2 pt 7 lc rgb '#2e86c1' title 'measured', {}{}
+set xlabel 'x, hull frame [m] (strip of {:.3f} m beside the waterline)'
+set title 'beside the hull'
+plot {} index 1 using 1:2 with linespoints lw 2 pt 7 lc rgb '#27ae60' title 'measured', {}{}
+unset multiplot
+)", r.window_s[0], r.window_s[1], r.snapshots, q(data), hf, bed, r.strip_m, q(data), hf, bed);
+  return render(out_dir / "ice_around_hull.png", work_dir, "ice_around_hull", body, 1400, 550);
+}
+
 std::vector<std::array<double, 2>> hull_waterline(const fs::path& hull_file, double draft_m) {
   std::vector<std::array<double, 2>> outline;
 #ifdef BRASH_POST_HAVE_HULL

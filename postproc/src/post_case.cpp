@@ -25,6 +25,10 @@ PostCase read_post_case(const std::filesystem::path& case_yaml) {
   p.channel_width_m = c.channel.width_m;
   p.water_level_m = c.water.level_m;
   p.band_m = c.hull.band_m;
+  p.ice_thickness_m = c.ice.thickness_m;
+  p.ice_porosity = c.ice.porosity;
+  p.ice_diameter_mean_m = c.ice.diameter_mean_m;
+  p.symmetry_y = c.speedups.symmetry_y;
   const auto put = [&](const char* key, const std::optional<double>& v) {
     if (v) p.fsicr_overrides[key] = *v;
   };

@@ -381,6 +381,90 @@ std::string split_markdown(const RunAnalysis& a) {
               "\"The hull force split\").\n\n";
 }
 
+// The ice around the hull (ice_around_hull.hpp): report.json's object, or why there is none.
+nlohmann::ordered_json ice_around_json(const RunAnalysis& a) {
+  using J = nlohmann::ordered_json;
+  if (!a.ice_around) return {{"not_available", a.ice_around_missing}};
+  const auto& r = *a.ice_around;
+  const auto bands = [](const std::vector<ThicknessBand>& v) {
+    J out = J::array();
+    for (const auto& b : v) out.push_back({{"from_m", b.from_m}, {"to_m", b.to_m}, {"thickness_m", b.thickness_m}});
+    return out;
+  };
+  J contact = J::object();
+  for (std::size_t k = 0; k < kHullRegions.size(); ++k)
+    contact[kHullRegions[k]] = {{"wetted_area_m2", r.wetted_area_m2[k]}, {"touched_fraction", r.contact_fraction[k]}};
+  contact["all"] = {{"wetted_area_m2", r.wetted_area_all_m2}, {"touched_fraction", r.contact_fraction_all}};
+  return {{"window_s", {r.window_s[0], r.window_s[1]}},
+          {"snapshots", r.snapshots},
+          {"thickness", {{"definition", "ice volume of the pieces centred in a patch per patch area / (1 - porosity)"},
+                         {"ice_thickness_m", r.ice_thickness_m},
+                         {"band_m", r.band_m},
+                         {"strip_m", r.strip_m},
+                         {"ahead_of_stem", bands(r.ahead)},
+                         {"beside_hull_x", bands(r.beside)}}},
+          {"H_F_measured_m", r.H_F_measured_m},
+          {"H_F_fsicr_model_m", opt(r.H_F_fsicr_model_m)},
+          {"H_M_fsicr_model_m", opt(r.H_M_model_m)},
+          {"x_par_m", {r.x_par_m[0], r.x_par_m[1]}},
+          {"contact", contact},
+          {"touching_pieces_mean", r.touching_pieces_mean},
+          {"touching_on_bottom_share", r.on_bottom_share},
+          {"deepest_touching_bottom_below_waterline_m", {{"mean", r.deepest_touching_mean_m},
+                                                         {"max", r.deepest_touching_max_m}}},
+          {"draft_m", r.draft_m},
+          {"below_keel", {{"pieces_mean", r.below_keel_pieces_mean}, {"deepest_below_keel_m", r.below_keel_deepest_m}}},
+          {"pressure_field", r.pressure_missing.empty() ? J("hull.vtu cell data contact_pressure_Pa")
+                                                        : J(nullptr)},
+          {"pressure_missing", r.pressure_missing.empty() ? J(nullptr) : J(r.pressure_missing)},
+          {"notes", r.notes}};
+}
+
+std::string ice_around_markdown(const RunAnalysis& a) {
+  std::string md = "## The ice around the hull\n\n";
+  if (!a.ice_around) return md + fmt::format("Not available: {}.\n\n", a.ice_around_missing);
+  const auto& r = *a.ice_around;
+  md += fmt::format("Over the window [{:.3f}, {:.3f}] s ({} snapshots); x in the hull frame, from the aft "
+                    "perpendicular. Thickness: the ice volume of the pieces centred in a patch per patch area, over "
+                    "(1 - porosity), as the case packs ice.thickness_m = {:.4g} m.\n\n",
+                    r.window_s[0], r.window_s[1], r.snapshots, r.ice_thickness_m);
+  const auto fsicr = [](const std::optional<double>& v) { return v ? fmt::format("{:.4f} m", *v) : std::string("n/a"); };
+  md += fmt::format("| quantity | model scale |\n|---|---|\n"
+                    "| brash in front of the bow, next to the stem (0 to {:.3f} m ahead): H_F measured | {:.4f} m |\n"
+                    "| FSICR's H_F = 0.26 m + (B H_M)^0.5, / lambda | {} |\n"
+                    "| FSICR's H_M of the ice class, / lambda | {} |\n",
+                    r.band_m, r.H_F_measured_m, fsicr(r.H_F_fsicr_model_m), fsicr(r.H_M_model_m));
+  RunMeta regions = a.meta;  // the regions this section used (meta.json's hull_split, else measured on the hull)
+  if (std::isfinite(r.x_par_m[0]) && std::isfinite(r.x_par_m[1])) regions.hull_split_par_m = r.x_par_m;
+  const auto labels = split_part_labels(regions);
+  for (std::size_t k = 0; k < kHullRegions.size(); ++k)
+    md += fmt::format("| wetted hull touched by ice: {} | {:.3g} % of {:.3g} m^2 |\n", labels[k],
+                      100 * r.contact_fraction[k], r.wetted_area_m2[k]);
+  md += fmt::format("| wetted hull touched by ice: all | {:.3g} % of {:.3g} m^2 |\n"
+                    "| pieces touching the hull (per snapshot) | {:.1f}, {:.3g} % of them on the bottom |\n"
+                    "| deepest touching piece's bottom below the waterline | {:.4f} m mean, {:.4f} m max (draft "
+                    "{:.4f} m) |\n"
+                    "| pieces below the keel within the hull's plan (per snapshot) | {:.2f}, deepest {:.4f} m below "
+                    "the keel |\n\n",
+                    100 * r.contact_fraction_all, r.wetted_area_all_m2, r.touching_pieces_mean, 100 * r.on_bottom_share,
+                    r.deepest_touching_mean_m, r.deepest_touching_max_m, r.draft_m, r.below_keel_pieces_mean,
+                    r.below_keel_deepest_m);
+  md += fmt::format("Thickness ahead of the stem (over the beam) and beside the hull (a strip of a quarter beam "
+                    "outside the waterline, both sides): ice_around_hull.png. A piece touches the hull when its "
+                    "centre is within {:g} radii of it; the touched share is the touching pieces' cross sections "
+                    "pi r^2 (touching below the waterline) over the wetted area: a square array of equal spheres "
+                    "against the hull touches pi/4 = 79 % of it; on the bottom: the triangle touched faces down.\n\n",
+                    1 + kContactTolerance);
+  md += r.pressure_missing.empty()
+            ? std::string("hull.vtu (hull frame) holds per triangle the touched share (contact_fraction) and the "
+                          "mean contact pressure over the window (contact_pressure_Pa).\n\n")
+            : fmt::format("hull.vtu (hull frame) holds per triangle the touched share (contact_fraction). No contact "
+                          "pressure: {}.\n\n",
+                          r.pressure_missing);
+  for (const auto& n : r.notes) md += fmt::format("- {}\n", n);
+  return r.notes.empty() ? md : md + "\n";
+}
+
 }  // namespace
 
 nlohmann::ordered_json report_json(const RunAnalysis& a) {
@@ -475,6 +559,7 @@ nlohmann::ordered_json report_json(const RunAnalysis& a) {
                          {"pieces_below_band_t_s", a.band->pieces_below_t_s},
                          {"snapshots", a.band->snapshots},
                          {"ok", !a.band->passed_under()}};
+  j["ice_around_hull"] = ice_around_json(a);
   j["notes"] = a.notes;
   return j;
 }
@@ -523,6 +608,7 @@ std::string report_markdown(const RunAnalysis& a) {
                       w.used_s[0], w.used_s[1]);
   else
     md += resistance_markdown(a) + split_markdown(a);
+  md += ice_around_markdown(a);
   md += fmt::format("## FSICR channel resistance (ice class {})\n\n| parameter | value | source |\n|---|---|---|\n", a.fsicr.ice_class);
   for (const auto& [name, field] : fsicr_fields())
     md += fmt::format("| {} | {:.4g} | {} |\n", name, a.fsicr.params.*field, a.fsicr.source.at(name));

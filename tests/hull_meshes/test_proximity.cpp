@@ -158,6 +158,38 @@ TEST(Proximity, WedgeMatchesHalfSpacesAndBruteForce) {
   }
 }
 
+// nearest(): the triangle it names holds the nearest point (brute force over every face), on the box's faces,
+// edges and corners; nothing within a short reach gives no triangle.
+TEST(Proximity, NearestNamesTheTriangleOfTheNearestPoint) {
+  const Mesh m = test::box(kL, kB, kD);
+  const Proximity prox(m);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> ux(-0.5, kL + 0.5), uy(-1, 1), uz(-0.5, kD + 0.5);
+  for (int n = 0; n < 500; ++n) {
+    const Vector3d p(ux(rng), uy(rng), uz(rng));
+    double brute = 1e300;
+    for (const auto& f : m.faces)
+      brute = std::min(brute, (closest_point_on_triangle(p, m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]) - p).norm());
+    const auto near = prox.nearest(p);
+    ASSERT_GE(near.triangle, 0);
+    const auto& f = m.faces[static_cast<std::size_t>(near.triangle)];
+    EXPECT_NEAR(near.distance_m, brute, kTol);
+    EXPECT_NEAR((closest_point_on_triangle(p, m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]) - p).norm(), brute,
+                kTol);
+    EXPECT_NEAR((near.point - p).norm(), brute, kTol);
+    EXPECT_EQ(prox.distance(p), near.distance_m);
+  }
+  // the bottom's centre seen from below: a bottom triangle (outward normal -z)
+  const auto below = prox.nearest({0.7, 0.1, -0.2});
+  const auto& f = m.faces[static_cast<std::size_t>(below.triangle)];
+  const Vector3d nrm = (m.vertices[f[1]] - m.vertices[f[0]]).cross(m.vertices[f[2]] - m.vertices[f[0]]);
+  EXPECT_LT(nrm.normalized().z(), -0.999);
+  EXPECT_NEAR(below.distance_m, 0.2, kTol);
+  const auto far = prox.nearest({0.7, 0.1, -0.2}, 0.1);
+  EXPECT_EQ(far.triangle, -1);
+  EXPECT_TRUE(std::isinf(far.distance_m));
+}
+
 TEST(Proximity, OpenMeshHasNoInside) {
   Mesh band = clip_band(test::box(kL, kB, kD), 0.2, 0.3);  // the four sides only: open
   const Proximity px(band);

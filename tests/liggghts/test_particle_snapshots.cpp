@@ -94,6 +94,35 @@ TEST(ParticleSnapshots, WithTheWindowEveryPieceOfThePackingWithItsState) {
   fs::remove_all(dir);
 }
 
+// The runner's dumps carry the hull wall's force on each piece (f_force_hullwall, store_force yes): the snapshot
+// gets the force of each piece on the hull, negated, after active (and state, 0 for a piece outside the scene).
+TEST(ParticleSnapshots, TheHullWallsForceOnEachPieceIsItsForceOnTheHull) {
+  const fs::path dir = make_run_dir("snapshots_force");
+  const auto write_force_dump = [&](long step, const std::string& atoms) {
+    std::ofstream(dir / "particles" / fmt::format("dump.{:010d}.txt", step))
+        << "ITEM: TIMESTEP\n" << step << "\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS ff ff ff\n0 1\n0 1\n0 1\n"
+        << "ITEM: ATOMS id x y z radius vx vy vz f_fl[1] f_fl[2] f_fl[3] f_fl[4] f_fl[5] f_force_hullwall[1] "
+           "f_force_hullwall[2] f_force_hullwall[3]\n"
+        << atoms;
+  };
+  write_force_dump(100, "2 0.31 0.21 -0.004 0.01 0.1 0.01 0.001 0.7 0.5 0.5 0.8 1 0.25 -0.5 0\n"
+                        "1 0.1 0.2 -0.005 0.01 0 0 0 0.75 0 0 0 0 0 0 0\n");
+  EXPECT_EQ(brash::liggghts::convert_dumps(dir, window_case(false)), 1u);
+  EXPECT_EQ(brash::test::read_text(dir / "particles/particles_0000000100.csv"),
+            "id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z,active,hull_fx_N,hull_fy_N,hull_fz_N\n"
+            "1,0.1,0.2,-0.005,0.01,0,0,0,0.75,0,0,0,0,0,0,0\n"
+            "2,0.31,0.21,-0.004,0.01,0.1,0.01,0.001,0.7,0.5,0.5,0.8,1,-0.25,0.5,0\n");
+  fs::remove(dir / "particles/particles_0000000100.csv");
+  write_force_dump(100, "2 0.31 0.21 -0.004 0.01 0.1 0.01 0.001 0.7 0.5 0.5 0.8 1 0.25 -0.5 0\n");
+  EXPECT_EQ(brash::liggghts::convert_dumps(dir, window_case(true)), 1u);
+  EXPECT_EQ(brash::test::read_text(dir / "particles/particles_0000000100.csv"),
+            "id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z,active,state,hull_fx_N,hull_fy_N,hull_fz_N\n"
+            "1,0.1,0.2,-0.005,0.01,0,0,0,0.84375,0,0,0,0,1,0,0,0\n"
+            "2,0.31,0.21,-0.004,0.01,0.1,0.01,0.001,0.7,0.5,0.5,0.8,1,0,-0.25,0.5,0\n"
+            "3,0.5,0.2,0,0.01,0,0,0,0.5,0,0,0,0,1,0,0,0\n");
+  fs::remove_all(dir);
+}
+
 TEST(ParticleSnapshots, WithTheWindowAMissingPackingIsNamed) {
   const fs::path dir = make_run_dir("snapshots_no_packing");
   fs::remove(dir / "packing.data");

@@ -4,7 +4,7 @@
 // that in 1.5 s the bow enters the held-out bed and the stern passes the channel. Every snapshot in particles/
 // holds every piece of the scene's packing (packing.data): the held-out ones where the packing has them, the
 // removed ones where they were last in the scene, both at rest, with the state column (docs/case_format.md,
-// particles/).
+// particles/); each piece's force on the hull (hull_fx_N) adds up to hull_force.csv's fx.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -27,6 +27,7 @@ namespace {
 struct Row {
   double x, y, z, vx, vy, vz;
   int state;
+  double hull_fx_N;  // the piece's force on the hull, x
 };
 
 // id -> row of a particles_<step>.csv with the state column
@@ -34,15 +35,16 @@ std::map<long, Row> read_snapshot(const fs::path& file) {
   std::ifstream in(file);
   std::string line;
   std::getline(in, line);
-  EXPECT_EQ(line, "id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z,active,state") << file;
+  EXPECT_EQ(line, "id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z,active,state,hull_fx_N,hull_fy_N,hull_fz_N")
+      << file;
   std::map<long, Row> rows;
   while (std::getline(in, line)) {
     std::vector<double> f;
     std::stringstream ss(line);
     for (std::string cell; std::getline(ss, cell, ',');) f.push_back(std::stod(cell));
-    EXPECT_EQ(f.size(), 14u) << line;
-    if (f.size() != 14) continue;
-    rows[std::lround(f[0])] = Row{f[1], f[2], f[3], f[5], f[6], f[7], static_cast<int>(f[13])};
+    EXPECT_EQ(f.size(), 17u) << line;
+    if (f.size() != 17) continue;
+    rows[std::lround(f[0])] = Row{f[1], f[2], f[3], f[5], f[6], f[7], static_cast<int>(f[13]), f[14]};
   }
   return rows;
 }
@@ -114,12 +116,32 @@ TEST(LiggghtsWindowRunner, EverySnapshotHoldsEveryPieceWithItsState) {
     }
   }
   ASSERT_EQ(files.size(), 16u);  // 0, 0.1, ..., 1.5 s
+  // hull_force.csv's fx at each time (its rows every 0.01 s: at each snapshot's time too)
+  std::map<long, double> fx_at_ms;
+  {
+    std::ifstream record(dir / "run/hull_force.csv");
+    std::string line;
+    std::getline(record, line);
+    while (std::getline(record, line)) {
+      std::stringstream ss(line);
+      std::string t, fx;
+      std::getline(ss, t, ',');
+      std::getline(ss, fx, ',');
+      fx_at_ms[std::lround(1000 * std::stod(t))] = std::stod(fx);
+    }
+  }
   std::map<long, Row> last_in_scene;
   std::map<long, int> state_before;
-  std::size_t held_first = 0, removed_last = 0, entered = 0;
+  std::size_t held_first = 0, removed_last = 0, entered = 0, pushed = 0;
   for (std::size_t k = 0; k < files.size(); ++k) {
     const auto rows = read_snapshot(dir / "run/particles" / files[k]);
     ASSERT_EQ(rows.size(), packing.size()) << files[k];
+    // the pieces' forces on the hull add up to the hull's force (the dump's 6 digits per piece)
+    double sum = 0, size = 0;
+    for (const auto& [id, r] : rows) sum += r.hull_fx_N, size += std::abs(r.hull_fx_N);
+    ASSERT_TRUE(fx_at_ms.count(static_cast<long>(100 * k))) << files[k];
+    EXPECT_NEAR(sum, fx_at_ms.at(static_cast<long>(100 * k)), 1e-5 * size + 1e-9) << files[k];
+    pushed += size > 0;
     for (const auto& [id, r] : rows) {
       ASSERT_TRUE(packing.count(id)) << files[k] << ": id " << id;
       const auto& p = packing.at(id);
@@ -131,7 +153,7 @@ TEST(LiggghtsWindowRunner, EverySnapshotHoldsEveryPieceWithItsState) {
         ASSERT_TRUE(last_in_scene.count(id)) << files[k] << ": id " << id << " removed, never seen";
         const Row& seen = last_in_scene.at(id);
         EXPECT_TRUE(r.x == seen.x && r.y == seen.y && r.z == seen.z) << files[k] << ": id " << id;
-        EXPECT_TRUE(r.vx == 0 && r.vy == 0 && r.vz == 0) << files[k] << ": id " << id;
+        EXPECT_TRUE(r.vx == 0 && r.vy == 0 && r.vz == 0 && r.hull_fx_N == 0) << files[k] << ": id " << id;
         removed_last += k + 1 == files.size();
       } else {
         ASSERT_EQ(r.state, 0) << files[k] << ": id " << id;
@@ -146,5 +168,6 @@ TEST(LiggghtsWindowRunner, EverySnapshotHoldsEveryPieceWithItsState) {
   EXPECT_GT(held_first, 0u);
   EXPECT_GT(entered, 0u);
   EXPECT_GT(removed_last, 0u);
+  EXPECT_GT(pushed, 3u);  // snapshots with the hull in the ice
   fs::remove_all(dir);
 }

@@ -193,9 +193,10 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
   s += fmt::format("fix hull all mesh/surface/stress file {} type 2 move {:.9g} 0 {:.9g} curvature_tolerant yes "
                    "reference_point 0 0 0\n",
                    opt.hull_file, hull_x0, -c.hull.draft_m);
-  // store_force_contact_stress: each hull contact's force and contact vector, per piece, for fix brash/hullsplit
+  // store_force_contact_stress: each hull contact's force and contact vector, per piece, for fix brash/hullsplit;
+  // store_force: the hull's force on each piece (f_force_hullwall), for the snapshots (brash-post's contact pressure)
   s += "fix hullwall all wall/gran " + granular_model(c) +
-       " mesh n_meshes 1 meshes hull store_force_contact_stress yes\n";
+       " mesh n_meshes 1 meshes hull store_force yes store_force_contact_stress yes\n";
   s += wall_lines(c, sp.symmetry_y, c.channel.ends == ChannelEnds::Walls);
   s += fmt::format("fix mv all move/mesh mesh hull linear {:.9g} 0 0\n", c.ship.speed_m_s);
   if (sp.farfield) {
@@ -267,7 +268,7 @@ std::string input_script(const Case& c, const Box& box, const SceneOptions& opt)
   }
   s += fmt::format(
       "dump parts all custom {} particles/dump.*.txt id x y z radius vx vy vz f_fl[1] f_fl[2] f_fl[3] f_fl[4] "
-      "f_fl[5]\n",
+      "f_fl[5] f_force_hullwall[1] f_force_hullwall[2] f_force_hullwall[3]\n",
       dump_every);
   s += "dump_modify parts pad 10\n";
   if (opt.restart_every_steps > 0)

@@ -6,6 +6,8 @@
 // a `state` column: 0 in the scene (as dumped), 1 held out (not yet in any snapshot: where the packing has it,
 // at rest), 2 removed (in an earlier snapshot, gone since: behind the stern or through the channel's ends, where
 // it was last seen, at rest). Without the window the snapshots are the dumps as they are (no state column).
+// A dump with the hull wall's force on each piece (f_force_hullwall) gives the snapshot's last columns
+// hull_fx_N,hull_fy_N,hull_fz_N: the piece's force on the hull (0 for a piece outside the scene).
 #pragma once
 #include <cstddef>
 #include <filesystem>

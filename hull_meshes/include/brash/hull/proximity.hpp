@@ -41,6 +41,15 @@ class Proximity {
   // Unsigned distance from p to the surface; +inf when it is larger than max_distance_m (faster search).
   double distance(const Eigen::Vector3d& p,
                   double max_distance_m = std::numeric_limits<double>::infinity()) const;
+  // The surface's point nearest to p and its triangle (the mesh's face index): what a piece touching the hull
+  // touches. distance_m = +inf and triangle = -1 when no point is within max_distance_m.
+  struct Nearest {
+    double distance_m = std::numeric_limits<double>::infinity();
+    int triangle = -1;
+    Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  };
+  Nearest nearest(const Eigen::Vector3d& p,
+                  double max_distance_m = std::numeric_limits<double>::infinity()) const;
   // Inside the closed surface (parity of the crossings of the ray from p towards +z). Always false when
   // the mesh is not closed.
   bool inside(const Eigen::Vector3d& p) const;

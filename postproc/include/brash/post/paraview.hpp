@@ -35,6 +35,12 @@ ParaviewOutput write_paraview(const std::filesystem::path& run_dir, const std::v
                               const std::optional<HullSurface>& hull, const PostCase& c, bool run_in_progress,
                               std::vector<std::string>& notes);
 
+// <run>/hull.vtu: the case hull in its own frame with the window's cell data of the ice around it
+// (ice_around_hull.hpp): contact_fraction, and contact_pressure_Pa where the snapshots carry the hull forces.
+std::filesystem::path write_hull_contact_field(const std::filesystem::path& run_dir, const HullSurface& hull,
+                                               const std::vector<double>& contact_fraction,
+                                               const std::vector<double>& contact_pressure_Pa);
+
 // The .pvd collection text (file names relative to the .pvd's folder).
 std::string pvd_text(const std::vector<std::pair<double, std::string>>& time_and_file);
 

@@ -1,8 +1,9 @@
 // Particle snapshots of a run: particles/index.csv (step,t_s,file,hull_x_m) and
-// particles/particles_<step>.csv (id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z[,active[,state]]:
-// active is 1 for an integrated piece, 0 for idle far-field ice; files without it (YADE) are read too; state, in the
-// snapshots of a run with the moving window, is 0 for a piece in the scene, 1 for one held out ahead, 2 for one
-// removed: every statistic reads the pieces in the scene only, the pictures every piece).
+// particles/particles_<step>.csv (id,x,y,z,radius,vx,vy,vz,submerged_fraction,ca_x,ca_y,ca_z[,active[,state]]
+// [,hull_fx_N,hull_fy_N,hull_fz_N]: active is 1 for an integrated piece, 0 for idle far-field ice; files without it
+// (YADE) are read too; state, in the snapshots of a run with the moving window, is 0 for a piece in the scene, 1 for
+// one held out ahead, 2 for one removed: every statistic reads the pieces in the scene only, the pictures every
+// piece; hull_f*_N, where an engine writes them, the force of the piece on the hull at the snapshot).
 #pragma once
 #include <cstdint>
 #include <filesystem>
@@ -24,6 +25,9 @@ struct Snapshot {
   std::vector<double> x, y, z, radius, vx, vy, vz, submerged_fraction, ca_x, ca_y, ca_z;
   std::vector<std::uint8_t> active;  // 1 integrated, 0 idle; empty when the file has no active column
   std::vector<std::uint8_t> state;   // kScene, kHeldOut, kRemoved; empty when the file has no state column
+  // the force of each piece on the hull [N]; empty when the file has no hull_f*_N columns (with_hull_force false)
+  std::vector<double> hull_fx_N, hull_fy_N, hull_fz_N;
+  bool with_hull_force = false;
   std::size_t size() const { return id.size(); }
   bool tail_dropped = false;
 };

@@ -35,6 +35,12 @@ std::filesystem::path plot_ice_views(const Snapshot& s, const SnapshotEntry& e, 
                                      const std::filesystem::path& out_dir, const std::filesystem::path& work_dir,
                                      const std::vector<std::array<double, 2>>& waterline = {});
 
+// The ice around the hull (a.ice_around, which must be set): the brash thickness ahead of the stem against the
+// distance ahead, with FSICR's H_F at model scale and the case's ice.thickness_m as lines, and beside the hull
+// against the hull frame's x. ice_around_hull.png.
+std::filesystem::path plot_ice_around_hull(const RunAnalysis& a, const std::filesystem::path& out_dir,
+                                           const std::filesystem::path& work_dir);
+
 struct CompareRow {
   std::string run, engine, fluid_model;
   double speed_m_s = 0;

@@ -21,6 +21,9 @@ struct PostCase {
   std::string fluid_model;
   double duration_s = 0, timestep_s = 0;
   double channel_width_m = 0, water_level_m = 0;
+  // the brash as the case packs it (ice.thickness_m: its volume per area is (1 - porosity) thickness)
+  double ice_thickness_m = 0, ice_porosity = 0, ice_diameter_mean_m = 0;
+  bool symmetry_y = false;  // speedups.symmetry_y: the half channel y >= 0 only
   std::optional<std::array<double, 2>> band_m;  // contact hull: [below, above] the waterline; nullopt = full hull
   std::array<double, 2> window_s{15.0, 40.0};
   // fsicr: overrides (full scale), keyed like FsicrParams fields: alpha_deg, phi1_deg, phi2_deg,

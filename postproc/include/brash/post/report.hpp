@@ -13,6 +13,7 @@
 #include <brash/fsicr_params.hpp>
 #include <brash/post/force_history.hpp>
 #include <brash/post/fsicr.hpp>
+#include <brash/post/ice_around_hull.hpp>
 #include <brash/post/particles.hpp>
 #include <brash/post/post_case.hpp>
 #include <brash/post/run_meta.hpp>
@@ -74,6 +75,10 @@ struct RunAnalysis {
   std::optional<double> ratio_fsicr_to_sim;
   std::optional<PublishedReference> reference;  // the case's published values for this run's fluid model
   std::optional<BandCheck> band;   // set by brash-post's report when the case has a contact band and snapshots
+  // The ice around the hull over the window (ice_around_hull.hpp), set by brash-post's report (add_ice_around_hull);
+  // without it, ice_around_missing says why (the report shows that, never zeros).
+  std::optional<IceAroundHull> ice_around;
+  std::string ice_around_missing = "not analysed";
   std::vector<std::string> notes;  // everything a reader must know (truncation, fallbacks, ...)
 };
 
@@ -85,6 +90,12 @@ inline constexpr std::array<const char*, 5> kSplitParts{"bow", "mid", "stern", "
 inline constexpr std::size_t kMinTrendSamples = 4;
 
 RunAnalysis analyze_run(const std::filesystem::path& run_dir);
+
+// Sets a.ice_around from the snapshots of the window (the case's hull; the regions of meta.json's hull_split, else
+// measured on the hull; FSICR's H_F and H_M of the report's FSICR section, else of the case's beam and ice class), or
+// a.ice_around_missing: no snapshot in the window, no hull mesh. Defined where brash-post has the hull library
+// (BRASH_POST_HAVE_ICE_AROUND_HULL).
+void add_ice_around_hull(RunAnalysis& a, const std::vector<SnapshotEntry>& entries);
 
 // The run's fluid model: meta.json's, else the case's.
 std::string run_fluid_model(const RunAnalysis& a);
