@@ -36,9 +36,11 @@ std::string panel_flow_key(const Case& c, const hull::Mesh& mesh) {
   const hull::PanelFlowSettings st;
   return fmt::format(
       "panel mesh {:016x} {} vertices {} faces; water_z {:.12g} m; speed {:.12g} m/s; max_panels {}; "
-      "far_factor {:.6g}; spacing {:.6g} draft; margin {:.6g} breadth",
+      "far_factor {:.6g}; spacing {:.6g} draft; margin {:.6g} breadth; along the hull: band {:.6g} draft, "
+      "tolerance {:.6g} speed, factor {}; u and Du/Dt",
       mesh_hash(mesh), mesh.vertices.size(), mesh.faces.size(), water_z(c), c.ship.speed_m_s, st.max_panels,
-      st.far_factor, st.table_spacing_fraction_of_draft, st.margin_fraction_of_breadth);
+      st.far_factor, st.table_spacing_fraction_of_draft, st.margin_fraction_of_breadth,
+      st.near_hull.band_fraction_of_draft, st.near_hull.tolerance_fraction_of_speed, st.near_hull.max_factor);
 }
 
 core::FlowTable hull_flow_table(const Case& c, const hull::Mesh& mesh) {
