@@ -76,19 +76,36 @@ core::FlowTable thin_ship_flow(const Mesh& mesh, double water_z_m, double ship_s
   const ThinShipSheet sheet = thin_ship_sheet(mesh, water_z_m, ship_speed_m_s, st);
   // into the table's frame: x as the mesh's, y = 0 the centre plane, z = 0 the water level (sources already)
   const double spacing = sheet.core_radius_m, margin = st.margin_fraction_of_breadth * 2.0 * sheet.half_breadth_max_m;
-  const DoubleBody body(mesh, water_z_m);
-  const double band = st.near_hull.band_fraction_of_draft * sheet.draft_m;
-  const core::FlowRefinement refine{band, st.near_hull.tolerance_fraction_of_speed * std::abs(ship_speed_m_s),
-                                    st.near_hull.max_factor};
   Eigen::Vector3d s_lo = sheet.sources[0].position_m, s_hi = s_lo;
   for (const auto& s : sheet.sources) s_lo = s_lo.cwiseMin(s.position_m), s_hi = s_hi.cwiseMax(s.position_m);
   const auto [box_lo, box_hi] = core::hull_flow_box(s_lo, s_hi, sheet.half_breadth_max_m, margin, spacing);
   const TableGrid w = window_grid(box_lo, box_hi, spacing, st.window);
-  core::FlowField f = body.field(2 * band);
   // the sheet's field, regularised over the table's spacing (hull_flow.hpp)
-  f.velocity = [&](const Eigen::Vector3d& p) { return core::induced_velocity(sheet.sources, p, spacing); };
-  f.body_velocity_m_s = Eigen::Vector3d(ship_speed_m_s, 0, 0), f.acceleration = true;
-  return core::FlowTable(f, w.lo, w.hi, w.nodes, w.lo.y() == 0.0, refine);
+  const auto velocity = [&](const Eigen::Vector3d& p) { return core::induced_velocity(sheet.sources, p, spacing); };
+  return hull_table(velocity, mesh, water_z_m, sheet.draft_m, Eigen::Vector3d(ship_speed_m_s, 0, 0), w,
+                    st.near_hull);
+}
+
+core::FlowTable hull_table(const std::function<core::Vec3(const core::Vec3&)>& velocity, const Mesh& mesh,
+                           double water_z_m, double draft_m, const core::Vec3& body_velocity_m_s,
+                           const TableGrid& w, const NearHullSettings& st) {
+  const bool mirror_y = w.lo.y() == 0.0;
+  if (st.coupling == HullFlowCoupling::DragRegularTable) {
+    core::FlowField plain;
+    plain.velocity = velocity;
+    return core::FlowTable(plain, w.lo, w.hi, w.nodes, mirror_y);
+  }
+  if (!(st.clearance_m >= 0)) throw InputError("hull flow: the table's clearance from the hull must be >= 0");
+  const double band = st.band_fraction_of_draft * draft_m;
+  const DoubleBody body(mesh, water_z_m);
+  core::FlowField f = body.field(2 * band);
+  f.velocity = velocity;
+  f.body_velocity_m_s = body_velocity_m_s, f.acceleration = st.coupling == HullFlowCoupling::Full;
+  const core::FlowRefinement refine{.band_m = band,
+                                    .tolerance_m_s = st.tolerance_fraction_of_speed * body_velocity_m_s.norm(),
+                                    .max_factor = st.max_factor,
+                                    .clearance_m = st.clearance_m};
+  return core::FlowTable(f, w.lo, w.hi, w.nodes, mirror_y, refine);
 }
 
 DoubleBody::DoubleBody(const Mesh& mesh, double water_z_m) : proximity_(mesh), water_z_m_(water_z_m) {}

@@ -159,14 +159,8 @@ core::FlowTable panel_flow(const core::PanelSolution& s, const Mesh& mesh, doubl
   // the box of thin_ship_flow's table (core::hull_flow_box): a margin around the wetted hull, y mirrored
   const auto [box_lo, box_hi] = core::hull_flow_box(lo, hi, half_breadth, margin, spacing);
   const TableGrid w = window_grid(box_lo, box_hi, spacing, st.window);
-  const double band = st.near_hull.band_fraction_of_draft * draft;
-  const DoubleBody body(mesh, water_z_m);
-  core::FlowField f = body.field(2 * band);
-  f.velocity = [&](const Vec3& p) { return core::panel_velocity(s, p); };
-  f.body_velocity_m_s = s.body_velocity_m_s, f.acceleration = true;
-  const core::FlowRefinement refine{band, st.near_hull.tolerance_fraction_of_speed * s.body_velocity_m_s.norm(),
-                                    st.near_hull.max_factor};
-  return core::FlowTable(f, w.lo, w.hi, w.nodes, w.lo.y() == 0.0, refine);
+  const auto velocity = [&](const Vec3& p) { return core::panel_velocity(s, p); };
+  return hull_table(velocity, mesh, water_z_m, draft, s.body_velocity_m_s, w, st.near_hull);
 }
 
 namespace {

@@ -156,6 +156,8 @@ std::vector<Site> jbc_sites() {
 }
 
 constexpr double kPieceDiameter = 0.0176;  // the paper case's ice pieces (m)
+// the paper case's clearance (brash::hull_flow_table): half its smallest piece's radius, (d - 3 sd) / 4
+constexpr double kClearance = (0.017578 - 3 * 0.0008789) / 4;
 
 // At 0.25, 0.5, 1 and 2 piece diameters off the stem, the bow shoulder, the side and the bilge, the engine's
 // table (the cells of hull::panel_flow's grid around each place, built as the whole table builds them) gives the
@@ -168,6 +170,7 @@ TEST(PanelFlowHull, JbcTableMatchesThePanelSumUpToTheHull) {
   for (const Site& place : jbc_sites()) {
     hull::PanelFlowSettings st;
     st.window = std::make_pair(place.centre - Vec3::Constant(0.05), place.centre + Vec3::Constant(0.05));
+    st.near_hull.clearance_m = kClearance;
     const core::FlowTable table = hull::panel_flow(s, jbc, 0.4125, st);
     core::FlowField plain;
     plain.velocity = [&](const Vec3& p) { return core::panel_velocity(s, p); };
@@ -200,8 +203,10 @@ TEST(PanelFlowHull, JbcThinShipTableMatchesTheSheetUpToTheHull) {
   }
 }
 
-// A sphere hull (half under the water: with its mirror image the whole sphere) against the closed form at 0.01
-// to 0.1 radii off its surface, all round its wetted half; the regular table does not hold it.
+// A sphere hull (half under the water: with its mirror image the whole sphere) against the closed form at 0.02
+// to 0.1 radii off its surface, all round its wetted half; the regular table does not hold it. (At 0.01 radii
+// these 1,280 panels themselves miss the closed form by 2.6 % of U; the table of the closed-form field holds 0.01
+// to 0.1 radii: tests/core/test_flow_acceleration.cpp.)
 TEST(PanelFlowHull, SphereHullTableMatchesTheClosedFormUpToTheSurface) {
   const double a = 0.3;
   const hull::Mesh m = mesh_of(brash::test::scaled(brash::test::icosphere(4), Vec3::Constant(a)), Vec3::Zero());
@@ -213,7 +218,7 @@ TEST(PanelFlowHull, SphereHullTableMatchesTheClosedFormUpToTheSurface) {
   plain.velocity = [&](const Vec3& p) { return core::panel_velocity(s, p); };
   const core::FlowTable regular(plain, table.lo(), table.hi(), table.nodes(), table.mirror_y());
   double worst = 0, worst_regular = 0;
-  for (double off : {0.01, 0.02, 0.05, 0.1})
+  for (double off : {0.02, 0.05, 0.1})
     for (double th = 0.1; th < std::numbers::pi; th += 0.25)
       for (double ph = 0.1; ph < std::numbers::pi; ph += 0.25) {  // y > 0, z < 0
         const Vec3 d(std::cos(th), std::sin(th) * std::cos(ph), -std::sin(th) * std::sin(ph));
@@ -229,7 +234,8 @@ TEST(PanelFlowHull, SphereHullTableMatchesTheClosedFormUpToTheSurface) {
 
 // The JBC model at its draft: towards the stem along the centre line at the waterline, the water ahead moves
 // more and more with the hull (stagnation: the relative speed falls towards 0); the thin-ship sheet, a smoothed
-// centre-plane source, keeps about half the relative flow there. (Closer than ~2 cm, a panel's size at the stem,
+// centre-plane source, keeps about half the relative flow there (its sum itself: 0.65 / 0.51 / 0.43 of U at 20 /
+// 10 / 5 cm). (Closer than ~2 cm, a panel's size at the stem,
 // the first-order panels' own near field shows.)
 TEST(PanelFlowHull, JbcStemIsAStagnationPoint) {
   const double draft = 0.4125;
@@ -239,16 +245,17 @@ TEST(PanelFlowHull, JbcStemIsAStagnationPoint) {
   for (const Triangle& t : s.body.triangles)
     for (const Vec3& v : t.v)
       if (v.z() > -0.005 && std::abs(v.y()) < 0.01) x_stem = std::max(x_stem, v.x());
-  const core::FlowTable thin = hull::thin_ship_flow(jbc, draft, kU);
+  const hull::ThinShipSheet sheet = hull::thin_ship_sheet(jbc, draft, kU);
   auto relative = [&](const Vec3& u) { return (u - kU * Vec3::UnitX()).norm() / kU; };
   double previous = 1.0;
   for (double ahead : {0.2, 0.1, 0.05, 0.025}) {
     const Vec3 p(x_stem + ahead, 0.0, -0.01);
-    const double panel_rel = relative(core::panel_velocity(s, p)), thin_rel = relative(thin.at(p));
+    const double panel_rel = relative(core::panel_velocity(s, p));
+    const double thin_rel = relative(core::induced_velocity(sheet.sources, p, sheet.core_radius_m));
     RecordProperty("panel_relative_" + std::to_string(ahead), std::to_string(panel_rel));
     RecordProperty("thin_ship_relative_" + std::to_string(ahead), std::to_string(thin_rel));
     EXPECT_LT(panel_rel, previous) << ahead;
-    EXPECT_GT(thin_rel, 0.44) << ahead;
+    EXPECT_GT(thin_rel, 0.4) << ahead;
     previous = panel_rel;
   }
   EXPECT_LT(previous, 0.3);  // 2.5 cm ahead of the stem

@@ -166,9 +166,10 @@ void fill_acceleration(std::vector<double>& v, const Block& b, const Vec3& h, co
 struct Sampler {
   const FlowField& field;
   Vec3 lo, h_fine;
+  double clearance_m;
   struct Sample {
     Vec3 u;
-    bool solid;
+    bool solid, checked;
   };
   std::unordered_map<std::uint64_t, Sample> cache;
   Sample operator()(long I, long J, long K) {
@@ -176,8 +177,9 @@ struct Sampler {
                               static_cast<std::uint64_t>(I);
     if (auto it = cache.find(key); it != cache.end()) return it->second;
     const Vec3 p = lo + Vec3(I * h_fine.x(), J * h_fine.y(), K * h_fine.z());
-    Sample s{Vec3::Zero(), field.solid && field.solid(p)};
+    Sample s{Vec3::Zero(), field.solid && field.solid(p), true};
     if (!s.solid) s.u = field.velocity(p);
+    if (!s.solid && clearance_m > 0) s.checked = !(field.distance_m(p) < clearance_m);
     cache.emplace(key, s);
     return s;
   }
@@ -252,12 +254,12 @@ FlowTable::FlowTable(const FlowField& field, const Vec3& lo, const Vec3& hi, con
   if (!refine) return;
 
   const int fine = r.max_factor;
-  Sampler sample{field, lo_, h_ / fine, {}};
+  Sampler sample{field, lo_, h_ / fine, r.clearance_m, {}};
   const Block cells{n_.x() - 1, n_.y() - 1, n_.z() - 1};
   cell_brick_.assign(cells.size(), -1);
   const double half_diagonal = 0.5 * h_.norm();
   std::vector<double> v;
-  std::vector<char> solid, brick_fluid;
+  std::vector<char> solid, unchecked, brick_fluid;
   for (int cz = 0; cz < cells.nz; ++cz)
     for (int cy = 0; cy < cells.ny; ++cy)
       for (int cx = 0; cx < cells.nx; ++cx) {
@@ -269,7 +271,7 @@ FlowTable::FlowTable(const FlowField& field, const Vec3& lo, const Vec3& hi, con
         // further nodes within tolerance
         for (int m = 2; m <= fine; m *= 2) {
           const Block b{m + 1, m + 1, m + 1};
-          v.assign(kC * b.size(), 0.0), solid.assign(b.size(), 0);
+          v.assign(kC * b.size(), 0.0), solid.assign(b.size(), 0), unchecked.assign(b.size(), 0);
           bool any_water = false, corner_solid = false;
           for (int k = 0; k <= m; ++k)
             for (int j = 0; j <= m; ++j)
@@ -279,7 +281,7 @@ FlowTable::FlowTable(const FlowField& field, const Vec3& lo, const Vec3& hi, con
                 const Sampler::Sample s = sample(static_cast<long>(cx) * fine + i * step,
                                                  static_cast<long>(cy) * fine + j * step,
                                                  static_cast<long>(cz) * fine + k * step);
-                solid[q] = s.solid;
+                solid[q] = s.solid, unchecked[q] = !s.checked;
                 any_water |= !s.solid;
                 if ((i == 0 || i == m) && (j == 0 || j == m) && (k == 0 || k == m)) corner_solid |= s.solid;
                 for (int c = 0; c < 3; ++c) v[kC * q + c] = s.u[c];
@@ -293,7 +295,7 @@ FlowTable::FlowTable(const FlowField& field, const Vec3& lo, const Vec3& hi, con
           for (int k = 0; k <= m; ++k)
             for (int j = 0; j <= m; ++j)
               for (int i = 0; i <= m; ++i) {
-                if (!(i % 2 || j % 2 || k % 2) || solid[b.at(i, j, k)]) continue;
+                if (!(i % 2 || j % 2 || k % 2) || solid[b.at(i, j, k)] || unchecked[b.at(i, j, k)]) continue;
                 const int ci = std::min(i / 2, m / 2 - 1), cj = std::min(j / 2, m / 2 - 1),
                           ck = std::min(k / 2, m / 2 - 1);
                 const double wx = 0.5 * (i - 2 * ci), wy = 0.5 * (j - 2 * cj), wz = 0.5 * (k - 2 * ck);

@@ -3,8 +3,10 @@
 // engine adapter that moves ice past a hull builds its table here, so the engines see the same field.
 #pragma once
 #include <brash/core/hull_flow.hpp>
+#include <brash/fluid_options.hpp>
 #include <brash/hull/mesh.hpp>
 #include <brash/hull/proximity.hpp>
+#include <functional>
 #include <optional>
 #include <span>
 #include <utility>
@@ -20,8 +22,13 @@ std::vector<double> half_breadths(const Mesh& mesh, std::span<const double> x_m,
 // subdivided until the interpolation error is below tolerance x ship speed.
 struct NearHullSettings {
   double band_fraction_of_draft = 0.25;
-  double tolerance_fraction_of_speed = 0.0025;
+  double tolerance_fraction_of_speed = 0.005;
   int max_factor = 8;
+  // core::FlowRefinement::clearance_m: no piece's centre comes closer to the hull than about its radius
+  double clearance_m = 0.0;
+  // Full: the table above with Du/Dt; Drag: the same without Du/Dt; DragRegularTable: a regular table that samples
+  // the field inside the hull too, without Du/Dt (the coupling before 0.9).
+  HullFlowCoupling coupling = HullFlowCoupling::Full;
 };
 
 // The body of the double-body flows: the hull under the water and its mirror image above it, in the table's
@@ -38,6 +45,15 @@ class DoubleBody {
   Proximity proximity_;
   double water_z_m_;
 };
+
+// The table of a hull's `velocity` (water's velocity, still-water frame, at points of the table's frame) on the
+// grid `grid` for a hull moving at body_velocity_m_s with the water at water_z_m of the mesh's frame: nodes
+// inside the hull (or within the clearance) never sampled, cells within band x draft refined, Du/Dt per node, as
+// `settings` ask.
+struct TableGrid;
+core::FlowTable hull_table(const std::function<core::Vec3(const core::Vec3&)>& velocity, const Mesh& mesh,
+                           double water_z_m, double draft_m, const core::Vec3& body_velocity_m_s,
+                           const TableGrid& grid, const NearHullSettings& settings);
 
 // Part of a table: only the cells of the whole table's grid that meet [lo, hi] (what a test looks at).
 using TableWindow = std::optional<std::pair<core::Vec3, core::Vec3>>;

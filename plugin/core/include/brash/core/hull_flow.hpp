@@ -72,6 +72,10 @@ struct FlowRefinement {
   double band_m = 0.0;         // cells whose centre is within this distance (+ half a cell's diagonal) of the surface
   double tolerance_m_s = 0.0;  // largest interpolation error allowed there
   int max_factor = 16;         // a power of 2
+  // Nodes closer than this to the surface are sampled but not checked: no piece's centre comes there (it stays
+  // about its radius off the hull), and there a panel method's own near field (its panels' edges and corners)
+  // would keep every cell at max_factor to no use.
+  double clearance_m = 0.0;
 };
 
 // A velocity field tabulated on a regular grid of the box [lo, hi] (spacing about spacing_m per axis), zero
