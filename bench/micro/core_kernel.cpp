@@ -5,6 +5,9 @@
 // items/s is pieces per second: its inverse is the cost of one piece in one step.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -82,6 +85,67 @@ void FlowTableLookup(benchmark::State& st) {
   st.SetItemsProcessed(static_cast<int64_t>(st.iterations() * kPieces));
 }
 BENCHMARK(FlowTableLookup);
+
+// One fluid step of every piece in a hull's flow, as fix icefluid does it (the table lookup per piece, then the
+// kernel), with the table as it was (a regular grid, U_flow only, the drag alone sees it) and as it is (nodes
+// inside the hull never used, cells along it refined, Du/Dt: the water's acceleration in the force), timed
+// alternately in one run; the counter `ratio` is the step's cost now over before. The hull: an ellipsoid of the
+// JBC model's length, breadth and draft (a double body about the water level) in the flow of a source doublet;
+// the pieces' bed of the other benchmarks lies around and across it.
+void HullFlowStep(benchmark::State& st) {
+  using brash::core::FlowField;
+  using brash::core::FlowTable;
+  Bed bed(kPieces);
+  const Vec3 axes(3.5, 0.56, 0.4125);
+  const auto field = [&](const Vec3& p) {
+    const Vec3 q = p.cwiseQuotient(axes);
+    const double r2 = std::max(q.squaredNorm(), 1e-6), r = std::sqrt(r2);
+    return Vec3(0.482 * 0.5 * (3 * q.x() * q / (r2 * r2 * r) - Vec3::UnitX() / (r2 * r)));
+  };
+  const Vec3 lo(-8.0, 0.0, -1.5), hi(8.0, 2.0, 0.1);
+  const FlowTable before(field, lo, hi, 0.4125 / 8, true);
+  FlowField body;
+  body.velocity = field, body.body_velocity_m_s = Vec3(0.482, 0, 0), body.acceleration = true;
+  body.solid = [&](const Vec3& p) { return p.cwiseQuotient(axes).norm() < 1.0; };
+  body.distance_m = [&](const Vec3& p) { return std::abs(p.cwiseQuotient(axes).norm() - 1.0) * axes.y(); };
+  const FlowTable now(body, lo, hi, 0.4125 / 8, true, {0.25 * 0.4125, 0.0025 * 0.482, 16});
+  std::vector<double> flow(3 * kPieces), accel(3 * kPieces);
+  brash::core::FluidParams p;
+  auto a = bed.arrays();
+  a.flow_m_s = flow.data();
+  double before_s = 0, now_s = 0;
+  for (auto _ : st) {
+    const auto t0 = std::chrono::steady_clock::now();
+    std::fill(bed.f.begin(), bed.f.end(), 0.0);
+    for (std::size_t i = 0; i < kPieces; ++i) {
+      const Vec3 u = before.at(Vec3(bed.x[3 * i], bed.x[3 * i + 1], bed.x[3 * i + 2]));
+      flow[3 * i] = u.x(), flow[3 * i + 1] = u.y(), flow[3 * i + 2] = u.z();
+    }
+    a.flow_acceleration_m_s2 = nullptr;
+    brash::core::apply_kernel(p, a, 1e-4, false);
+    benchmark::DoNotOptimize(bed.f.data());
+    const auto t1 = std::chrono::steady_clock::now();
+    std::fill(bed.f.begin(), bed.f.end(), 0.0);
+    Vec3 u, du_dt;
+    for (std::size_t i = 0; i < kPieces; ++i) {
+      now.at(Vec3(bed.x[3 * i], bed.x[3 * i + 1], bed.x[3 * i + 2]), u, du_dt);
+      flow[3 * i] = u.x(), flow[3 * i + 1] = u.y(), flow[3 * i + 2] = u.z();
+      accel[3 * i] = du_dt.x(), accel[3 * i + 1] = du_dt.y(), accel[3 * i + 2] = du_dt.z();
+    }
+    a.flow_acceleration_m_s2 = accel.data();
+    brash::core::apply_kernel(p, a, 1e-4, false);
+    benchmark::DoNotOptimize(bed.f.data());
+    const auto t2 = std::chrono::steady_clock::now();
+    before_s += std::chrono::duration<double>(t1 - t0).count(), now_s += std::chrono::duration<double>(t2 - t1).count();
+  }
+  const double steps = static_cast<double>(st.iterations()) * kPieces;
+  st.counters["before_ns_per_piece"] = before_s / steps * 1e9;
+  st.counters["now_ns_per_piece"] = now_s / steps * 1e9;
+  st.counters["ratio"] = now_s / before_s;
+  st.counters["bricks"] = static_cast<double>(now.bricks().size());
+  st.SetItemsProcessed(static_cast<int64_t>(st.iterations() * kPieces));
+}
+BENCHMARK(HullFlowStep)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 

@@ -327,6 +327,12 @@ const KeySpec kFluid[] = {
         "U_flow of the drag: none (still water), thin_ship (thin-ship sheet) or panel (double-body panel method, "
         "cached in generated/panel_flow.bin); LIGGGHTS and ODE, not YADE; not with model added_mass",
         [](const Case& c) { return c.fluid.hull_flow != HullFlow::None; }),
+    choice<kHullFlowCoupling, &Case::fluid, &FluidSpec::hull_flow_coupling>(
+        "hull_flow_coupling",
+        "how fluid.hull_flow acts: full (the drag on the relative velocity and the water's acceleration, from a "
+        "table valid up to the hull), drag (the drag alone, same table) or drag_regular_table (the drag alone, "
+        "a regular table that samples inside the hull: the coupling before 0.9)",
+        [](const Case& c) { return c.fluid.hull_flow != HullFlow::None; }),
 };
 
 const KeySpec kRun[] = {
@@ -509,6 +515,9 @@ void hull_flow_needs_drag(const Reader& r, const YAML::Node&, const YAML::Node& 
     r.fail(s["hull_flow"], "fluid.hull_flow",
            "the flow around the hull acts through the drag, and fluid.model added_mass has none: use drag or "
            "both, or hull_flow: none");
+  if (c.fluid.hull_flow == HullFlow::None && c.fluid.hull_flow_coupling != HullFlowCoupling::Full)
+    r.fail(s["hull_flow_coupling"], "fluid.hull_flow_coupling",
+           "says how the hull's flow acts, and fluid.hull_flow is none: set a hull_flow, or drop this key");
 }
 
 void window_in_run(const Reader& r, const YAML::Node&, const YAML::Node& s, Case& c) {

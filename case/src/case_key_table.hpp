@@ -33,6 +33,10 @@ inline constexpr EnumText<DragLaw> kDragLaw[] = {{DragLaw::Constant, "constant"}
                                                  {DragLaw::SchillerNaumann, "schiller_naumann"}};
 inline constexpr EnumText<HullFlow> kHullFlow[] = {
     {HullFlow::None, "none"}, {HullFlow::ThinShip, "thin_ship"}, {HullFlow::Panel, "panel"}};
+inline constexpr EnumText<HullFlowCoupling> kHullFlowCoupling[] = {
+    {HullFlowCoupling::Full, "full"},
+    {HullFlowCoupling::Drag, "drag"},
+    {HullFlowCoupling::DragRegularTable, "drag_regular_table"}};
 inline constexpr EnumText<ChannelEnds> kChannelEnds[] = {{ChannelEnds::Open, "open"}, {ChannelEnds::Walls, "walls"}};
 inline constexpr EnumText<WakeBy> kWakeBy[] = {
     {WakeBy::Force, "force"}, {WakeBy::NeighbourSpeed, "neighbour_speed"}, {WakeBy::PushFront, "push_front"}};

@@ -143,39 +143,69 @@ core::FlowTable panel_flow(const Mesh& mesh, double water_z_m, double ship_speed
                            const PanelFlowSettings& st) {
   if (!(st.table_spacing_fraction_of_draft > 0) || !(st.margin_fraction_of_breadth > 0))
     throw InputError("panel flow: the table needs a positive spacing and margin");
-  const core::PanelSolution s = panel_solution(mesh, water_z_m, ship_speed_m_s, st);
+  return panel_flow(panel_solution(mesh, water_z_m, ship_speed_m_s, st), mesh, water_z_m, st);
+}
+
+core::FlowTable panel_flow(const core::PanelSolution& s, const Mesh& mesh, double water_z_m,
+                           const PanelFlowSettings& st) {
+  if (!(st.table_spacing_fraction_of_draft > 0) || !(st.margin_fraction_of_breadth > 0))
+    throw InputError("panel flow: the table needs a positive spacing and margin");
   Vec3 lo = s.body.triangles[0].v[0], hi = lo;
   for (const Triangle& t : s.body.triangles)
     for (const Vec3& v : t.v) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
   const double half_breadth = std::max(std::abs(lo.y()), std::abs(hi.y())), draft = -lo.z();
   const double margin = st.margin_fraction_of_breadth * 2.0 * half_breadth;
   const double spacing = st.table_spacing_fraction_of_draft * draft;
-  // the box of thin_ship_flow's table (core::hull_flow_table): a margin around the wetted hull, y mirrored
-  return core::panel_flow_table(
-      s, Vec3(lo.x() - margin, 0.0, lo.z() - margin),
-      Vec3(hi.x() + margin, half_breadth + margin, std::max(2.0 * spacing, 0.25 * margin)), spacing);
+  // the box of thin_ship_flow's table (core::hull_flow_box): a margin around the wetted hull, y mirrored
+  const auto [box_lo, box_hi] = core::hull_flow_box(lo, hi, half_breadth, margin, spacing);
+  const TableGrid w = window_grid(box_lo, box_hi, spacing, st.window);
+  const auto velocity = [&](const Vec3& p) { return core::panel_velocity(s, p); };
+  return hull_table(velocity, mesh, water_z_m, draft, s.body_velocity_m_s, w, st.near_hull);
 }
 
 namespace {
-constexpr char kMagic[] = "brash flow table 1\n";
+// Version 2: per node u and Du/Dt, and the bricks of the cells along the hull. A file of version 1 (u only,
+// no bricks) is still read: the table of a run started before, resumed.
+constexpr char kMagic[] = "brash flow table 2\n";
+constexpr char kMagicV1[] = "brash flow table 1\n";
+
+template <class T>
+void put(std::ofstream& out, const std::vector<T>& v) {
+  const std::uint64_t n = v.size();
+  out.write(reinterpret_cast<const char*>(&n), sizeof n);
+  out.write(reinterpret_cast<const char*>(v.data()), static_cast<std::streamsize>(n * sizeof(T)));
 }
+
+template <class T>
+bool get(std::ifstream& in, std::vector<T>& v) {
+  std::uint64_t n = 0;
+  if (!in.read(reinterpret_cast<char*>(&n), sizeof n) || n > (std::uint64_t{1} << 32)) return false;
+  v.resize(n);
+  return static_cast<bool>(in.read(reinterpret_cast<char*>(v.data()), static_cast<std::streamsize>(n * sizeof(T))));
+}
+
+}  // namespace
 
 void write_flow_table(const std::filesystem::path& file, const core::FlowTable& t, const std::string& key) {
   const std::filesystem::path tmp = file.string() + ".tmp";
   {
     std::ofstream out(tmp, std::ios::binary);
     if (!out) throw InputError(fmt::format("{}: cannot write the flow table", tmp.string()));
-    const std::uint64_t key_size = key.size(), count = t.values().size();
+    const std::uint64_t key_size = key.size();
     const std::int32_t nodes[3] = {t.nodes().x(), t.nodes().y(), t.nodes().z()};
     const double box[6] = {t.lo().x(), t.lo().y(), t.lo().z(), t.hi().x(), t.hi().y(), t.hi().z()};
-    const char mirror = t.mirror_y() ? 1 : 0;
+    const char flags[2] = {t.mirror_y() ? char{1} : char{0}, t.has_acceleration() ? char{1} : char{0}};
     out.write(kMagic, sizeof kMagic - 1);
     out.write(reinterpret_cast<const char*>(&key_size), sizeof key_size).write(key.data(), key.size());
     out.write(reinterpret_cast<const char*>(box), sizeof box)
         .write(reinterpret_cast<const char*>(nodes), sizeof nodes);
-    out.write(&mirror, 1).write(reinterpret_cast<const char*>(&count), sizeof count);
-    out.write(reinterpret_cast<const char*>(t.values().data()),
-              static_cast<std::streamsize>(count * sizeof(double)));
+    out.write(flags, sizeof flags);
+    put(out, t.values());
+    put(out, t.cell_bricks());
+    std::vector<std::int64_t> bricks;  // offset, factor
+    for (const auto& b : t.bricks()) bricks.push_back(static_cast<std::int64_t>(b.offset)), bricks.push_back(b.factor);
+    put(out, bricks);
+    put(out, t.brick_values());
     if (!out) throw InputError(fmt::format("{}: cannot write the flow table", tmp.string()));
   }
   std::filesystem::rename(tmp, file);
@@ -187,25 +217,37 @@ namespace {
 std::optional<core::FlowTable> read_table(const std::filesystem::path& file, const std::string* key) {
   std::ifstream in(file, std::ios::binary);
   char magic[sizeof kMagic - 1];
-  std::uint64_t key_size = 0, count = 0;
-  if (!in.read(magic, sizeof magic) || std::string(magic, sizeof magic) != kMagic) return std::nullopt;
+  std::uint64_t key_size = 0;
+  if (!in.read(magic, sizeof magic)) return std::nullopt;
+  const std::string m(magic, sizeof magic);
+  const bool v1 = m == kMagicV1;
+  if (!v1 && m != kMagic) return std::nullopt;
   if (!in.read(reinterpret_cast<char*>(&key_size), sizeof key_size) || key_size > (1u << 16)) return std::nullopt;
   std::string stored(key_size, '\0');
   if (!in.read(stored.data(), static_cast<std::streamsize>(key_size)) || (key && stored != *key))
     return std::nullopt;
   double box[6];
   std::int32_t nodes[3];
-  char mirror = 0;
+  char flags[2] = {0, 0};
   in.read(reinterpret_cast<char*>(box), sizeof box).read(reinterpret_cast<char*>(nodes), sizeof nodes);
-  in.read(&mirror, 1).read(reinterpret_cast<char*>(&count), sizeof count);
-  if (!in || count > (std::uint64_t{1} << 32)) return std::nullopt;
-  std::vector<double> values(count);
-  if (!in.read(reinterpret_cast<char*>(values.data()), static_cast<std::streamsize>(count * sizeof(double))))
+  in.read(flags, v1 ? 1 : 2);
+  std::vector<double> values, brick_values;
+  std::vector<std::int32_t> cells;
+  std::vector<std::int64_t> bricks;
+  if (!in || !get(in, values)) return std::nullopt;
+  if (!v1 && (!get(in, cells) || !get(in, bricks) || !get(in, brick_values) || bricks.size() % 2))
     return std::nullopt;
   try {
-    return core::FlowTable::from_values(Vec3(box[0], box[1], box[2]), Vec3(box[3], box[4], box[5]),
-                                        Eigen::Vector3i(nodes[0], nodes[1], nodes[2]), mirror != 0,
-                                        std::move(values));
+    core::FlowTable t = core::FlowTable::from_values(Vec3(box[0], box[1], box[2]), Vec3(box[3], box[4], box[5]),
+                                                     Eigen::Vector3i(nodes[0], nodes[1], nodes[2]), flags[0] != 0,
+                                                     std::move(values), flags[1] != 0);
+    std::vector<core::FlowTable::Brick> b;
+    for (std::size_t k = 0; k < bricks.size(); k += 2) {
+      if (bricks[k] < 0) return std::nullopt;
+      b.push_back({static_cast<std::uint64_t>(bricks[k]), static_cast<std::int32_t>(bricks[k + 1])});
+    }
+    if (!cells.empty() || !b.empty()) t.set_bricks(std::move(cells), std::move(b), std::move(brick_values));
+    return t;
   } catch (const InputError&) {
     return std::nullopt;  // a damaged file: computed again
   }

@@ -2,6 +2,7 @@
 // plugin/core (evaluate / advance). See fix_icefluid.h for the command syntax.
 #include "fix_icefluid.h"
 
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <string>
@@ -66,6 +67,7 @@ FixIceFluid::~FixIceFluid() {
   memory->destroy(state_);
   memory->destroy(output_);
   memory->destroy(flow_);
+  memory->destroy(flow_accel_);
 }
 
 void FixIceFluid::parse(int narg, char** arg) {
@@ -135,7 +137,8 @@ void FixIceFluid::parse(int narg, char** arg) {
             FLERR,
             "fix icefluid: 'flow' and 'hull_flow' exclude each other (the hull's flow is in still water)");
       if (!params_.has_drag())
-        error->all(FLERR, "fix icefluid: 'hull_flow' acts through the drag, and model added_mass has none");
+        error->all(FLERR, "fix icefluid: 'hull_flow' acts through the drag (on the velocity relative to the "
+                          "water), and model added_mass has none");
       // Every rank builds the same table from the same file (deterministic): no communication,
       // rank-independent. The mesh reader's and the table's errors name the file or the problem, not the fix.
       try {
@@ -215,13 +218,19 @@ void FixIceFluid::compute(bool replay) {
                            params_.water_level_m);
     const double* x = atom->x[0];
     double* fl = flow_[0];
+    double* fa = flow_accel_[0];
     const int* mask = atom->mask;
+    core::Vec3 u, du_dt;
     for (int i = 0; i < atom->nlocal; i++) {
       if (igroup != 0 && !(mask[i] & groupbit)) continue;  // the kernel skips them too (idle far-field ice)
-      const core::Vec3 u = hull_flow_.at(core::Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]) - frame);
+      // U_flow and Du/Dt (earth frame) at the sphere: the table's values move with the hull
+      hull_flow_.at(core::Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]) - frame, u, du_dt);
       fl[3 * i] = u.x(), fl[3 * i + 1] = u.y(), fl[3 * i + 2] = u.z();
+      fa[3 * i] = du_dt.x(), fa[3 * i + 1] = du_dt.y(), fa[3 * i + 2] = du_dt.z();
     }
     a.flow_m_s = fl;
+    // a table of the first file version (a run started before) has no Du/Dt: the drag alone sees the flow
+    if (hull_flow_.has_acceleration()) a.flow_acceleration_m_s2 = fa;
   }
   core::apply_kernel(params_, a, update->dt, replay);
 }
@@ -229,7 +238,10 @@ void FixIceFluid::compute(bool replay) {
 void FixIceFluid::grow_arrays(int nmax) {
   memory->grow(state_, nmax, kStateSize, "icefluid:state");
   memory->grow(output_, nmax, kOutputSize, "icefluid:output");
-  if (!hull_flow_.empty()) memory->grow(flow_, nmax, 3, "icefluid:flow");
+  if (!hull_flow_.empty()) {
+    memory->grow(flow_, nmax, 3, "icefluid:flow");
+    memory->grow(flow_accel_, nmax, 3, "icefluid:flow_accel");
+  }
   array_atom = output_;
 }
 
@@ -270,9 +282,10 @@ void FixIceFluid::unpack_restart(int nlocal, int nth) {
 }
 
 double FixIceFluid::memory_usage() {
-  const int flow = hull_flow_.empty() ? 0 : 3;
+  const int flow = hull_flow_.empty() ? 0 : 6;
   return double(atom->nmax) * (kStateSize + kOutputSize + flow) * sizeof(double) +
-         3.0 * hull_flow_.nodes().prod() * sizeof(double);
+         (double(hull_flow_.values().size()) + double(hull_flow_.brick_values().size())) * sizeof(double) +
+         double(hull_flow_.cell_bricks().size()) * sizeof(std::int32_t);
 }
 
 }  // namespace brash::liggghts

@@ -16,7 +16,10 @@
                   body, plugin/core hull_flow.hpp): the hull mesh FILE, or a flow table FILE.bin that the
                   runner computed (thin-ship or panel flow, brash/hull/panel_flow.hpp); its frame's origin
                   in the scene at t = 0 and its speed along x (the hull moves with t = step * dt, as fix
-                  move/mesh linear from step 0); only the drag uses it   [none]
+                  move/mesh linear from step 0). The drag acts on the velocity relative to the water,
+                  and the table's Du/Dt adds the pressure-gradient force and the added mass's reaction
+                  to the relative acceleration, rho V_s (1 + Ca) Du/Dt (brash/core/flow_acceleration.hpp)
+                  [none]
      g            gravity magnitude for buoyancy (m/s^2)   [9.81]
      gravity      no | yes: also apply -m g here (then do not use fix gravity)  [no]
      output_every N: fill the per-atom output only every N steps (dump interval)  [1]
@@ -72,6 +75,7 @@ class FixIceFluid : public LAMMPS_NS::Fix {
   brash::core::Vec3 hull_flow_origin_m_ = brash::core::Vec3::Zero();
   double hull_flow_speed_m_s_ = 0.0;
   double** flow_ = nullptr;  // per-atom flow velocity of this step (not carried: a function of x and t)
+  double** flow_accel_ = nullptr;  // per-atom Du/Dt of that flow, earth frame (the same)
   int output_every_ = 1;  // per-atom output is only needed on dump steps
   double** state_ = nullptr;
   double** output_ = nullptr;

@@ -306,6 +306,10 @@ TEST(CaseLoaderErrors, HullFlowNeedsTheDragAndAKnownName) {
   // with added_mass the flow would do nothing, and silently
   expect_error("name: x\nfluid:\n  model: added_mass\n  hull_flow: thin_ship\n",
                {"fluid.hull_flow", ":4:", "added_mass has none"});
+  expect_error("name: x\nfluid: {model: both, hull_flow_coupling: drag}\n",
+               {"fluid.hull_flow_coupling", "hull_flow is none"});
+  expect_error("name: x\nfluid: {model: both, hull_flow: panel, hull_flow_coupling: morison}\n",
+               {"fluid.hull_flow_coupling", "morison", "full | drag | drag_regular_table"});
   expect_error("name: x\nfluid: {model: both, hull_flow: potential}\n",
                {"fluid.hull_flow", "potential", "none | thin_ship"});
 }

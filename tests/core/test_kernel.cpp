@@ -53,18 +53,24 @@ TEST_P(KernelVsReference, SameForcesOverSeveralSteps) {
   const int variant = std::get<2>(GetParam());
   if (variant == 1) p.drag_law = DragLaw::SchillerNaumann, p.ca = CaTable::text_variant();
   if (variant == 2) p.apply_gravity = true, p.flow_velocity_m_s = Vec3(0.1, -0.05, 0.02);
+  // variant 5: a uniform flow that accelerates (flow_acceleration.hpp)
+  if (variant == 5) p.flow_velocity_m_s = Vec3(0.1, -0.05, 0.02), p.flow_acceleration_m_s2 = Vec3(0.3, 0.2, -0.4);
   const double dt = 1e-3;
   Scene s = make_scene(400, 7 + variant);
   std::mt19937_64 gen(3);
   std::uniform_real_distribution<double> u(-1, 1);
   // variant 3: each sphere its own flow (a hull's flow field, hull_flow.hpp); the reference takes it as the
   // uniform flow of that sphere's evaluation
-  std::vector<double> flow;
-  if (variant == 3)
+  // variant 4: and its own Du/Dt (the hull's flow with its acceleration)
+  std::vector<double> flow, accel;
+  if (variant == 3 || variant == 4)
     for (std::size_t j = 0; j < 3 * s.r.size(); ++j) flow.push_back(0.2 * u(gen));
+  if (variant == 4)
+    for (std::size_t j = 0; j < 3 * s.r.size(); ++j) accel.push_back(0.5 * u(gen));
   auto kernel_arrays = [&] {
     KernelArrays a = arrays(s);
     if (!flow.empty()) a.flow_m_s = flow.data();
+    if (!accel.empty()) a.flow_acceleration_m_s2 = accel.data();
     return a;
   };
   for (int step = 0; step < 4; ++step) {
@@ -73,6 +79,7 @@ TEST_P(KernelVsReference, SameForcesOverSeveralSteps) {
       const Vec3 x(s.x[3 * i], s.x[3 * i + 1], s.x[3 * i + 2]), v(s.v[3 * i], s.v[3 * i + 1], s.v[3 * i + 2]);
       FluidParams pi = p;
       if (!flow.empty()) pi.flow_velocity_m_s = Vec3(flow[3 * i], flow[3 * i + 1], flow[3 * i + 2]);
+      if (!accel.empty()) pi.flow_acceleration_m_s2 = Vec3(accel[3 * i], accel[3 * i + 1], accel[3 * i + 2]);
       const FluidOutput o = evaluate(pi, Sphere{s.r[i], s.m[i], x, v}, s.ref_state[i], dt);
       for (int k = 0; k < 3; ++k) f_ref[3 * i + k] = (f_ref[3 * i + k] + o.force_N[k]) * o.scale[k];
       s.ref_state[i] = advance(s.ref_state[i], v);
@@ -133,7 +140,7 @@ INSTANTIATE_TEST_SUITE_P(AllModels, KernelVsReference,
                          ::testing::Combine(::testing::Values(FluidModel::Drag, FluidModel::AddedMass,
                                                               FluidModel::Both),
                                             ::testing::Values(Treatment::Implicit, Treatment::Explicit),
-                                            ::testing::Values(0, 1, 2, 3)));
+                                            ::testing::Values(0, 1, 2, 3, 4, 5)));
 
 // The output's rows are kOutputStride wide: fraction, Ca x, y, z, active. A sphere outside the group (idle far-field
 // ice) floats all the same: its real submerged fraction, no Ca (no fluid force acts on it), active 0.

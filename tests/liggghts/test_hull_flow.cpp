@@ -1,4 +1,5 @@
-// fix icefluid's hull_flow: the drag of pieces near a moving hull is the core's drag in the thin-ship flow
+// fix icefluid's hull_flow: the force on pieces near a moving hull is the core's drag and the water's
+// acceleration (flow_acceleration.hpp) in the thin-ship flow
 // (brash::hull::thin_ship_flow of the same STL, at the hull's position at that step), on 1 and 2 ranks; the
 // water pushes pieces ahead of the bow forward and draws pieces alongside aft.
 #include <fmt/format.h>
@@ -94,8 +95,11 @@ TEST(LiggghtsHullFlow, DragIsTheCoresInTheHullsFlowOnOneAndTwoRanks) {
       FluidParams p;
       p.model = FluidModel::Drag;
       const Vec3 frame(x0 + speed * steps * dt, 0, 0);  // water level at z = 0
-      p.flow_velocity_m_s = table.at(x - frame);
-      const Vec3 drag = drag_force(p, r, immersion(r, x.z(), 0.0), v);
+      Vec3 du_dt;
+      table.at(x - frame, p.flow_velocity_m_s, du_dt);
+      // the drag on the relative velocity and the water's acceleration, rho V_s Du/Dt (model drag: C_a = 0)
+      const Immersion im = immersion(r, x.z(), 0.0);
+      const Vec3 drag = drag_force(p, r, im, v) + p.water_density_kg_m3 * im.volume_m3 * du_dt;
       EXPECT_NEAR(row[7], drag.x(), 1e-9 * (1 + std::abs(drag.x())) + 1e-12) << "atom " << id;
       EXPECT_NEAR(row[8], drag.y(), 1e-9 * (1 + std::abs(drag.y())) + 1e-12) << "atom " << id;
       moved += p.flow_velocity_m_s.norm() > 1e-3;

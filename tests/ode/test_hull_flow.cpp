@@ -72,10 +72,11 @@ TEST(OdeHullFlow, DragIsTheCoresInTheHullsFlowAtTheHullsPosition) {
   const Vec3 frame(hull_before.x(), hull_before.y(), p.water_level_m);
   int nonzero = 0;
   for (std::size_t i = 0; i < w.size(); ++i) {
-    const Vec3 u = table.at(x_before[i] - frame);
+    Vec3 u, du_dt;
+    table.at(x_before[i] - frame, u, du_dt);
     if (u.norm() > 1e-4) ++nonzero;
     FluidParams pi = p;
-    pi.flow_velocity_m_s = u;
+    pi.flow_velocity_m_s = u, pi.flow_acceleration_m_s2 = du_dt;  // the drag and the water's acceleration
     const FluidOutput expect = evaluate(pi, Sphere{r, w.mass(i), x_before[i], v_before[i]}, FluidState{}, dt);
     const FluidOutput& got = w.fluid_output(i);
     for (int a = 0; a < 3; ++a)

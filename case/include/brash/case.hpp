@@ -135,6 +135,8 @@ struct FluidSpec {
   // bow and following the stern (plugin/core hull_flow.hpp); panel = the double-body potential flow
   // (panel_flow.hpp); LIGGGHTS and ODE (brash/case_hull_flow.hpp)
   HullFlow hull_flow = HullFlow::None;
+  // how that flow acts (fluid_options.hpp): full = drag + the water's acceleration from a table valid to the hull
+  HullFlowCoupling hull_flow_coupling = HullFlowCoupling::Full;
   bool operator==(const FluidSpec&) const = default;
 };
 

@@ -4,6 +4,7 @@
 #pragma once
 #include <brash/case.hpp>
 #include <brash/core/hull_flow.hpp>
+#include <brash/hull/flow.hpp>
 #include <brash/hull/mesh.hpp>
 #include <filesystem>
 #include <string>
@@ -14,6 +15,10 @@ namespace brash {
 // draft), in the hull frame with z = 0 at the water level; empty for hull_flow: none. The panel flow (a few
 // seconds to a minute) is cached in panel_flow_cache_file(c) and computed again when its key differs.
 core::FlowTable hull_flow_table(const Case& c, const hull::Mesh& mesh);
+
+// How the case's table treats the hull: fluid.hull_flow_coupling, and a clearance of half the smallest piece's
+// radius (hull::NearHullSettings).
+hull::NearHullSettings hull_flow_near_hull(const Case& c);
 
 // <the packing file's folder>/panel_flow.bin: beside the packing (cases/<name>/generated/)
 std::filesystem::path panel_flow_cache_file(const Case& c);

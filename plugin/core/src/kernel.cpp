@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "brash/core/flow_acceleration.hpp"
 #include "brash/core/fluid.hpp"
 #include "brash/core/immersion.hpp"
 
@@ -44,6 +45,12 @@ void kernel(const FluidParams& p, const KernelArrays& a, double dt_s) {
   const double inv_dt = dt_s > 0 ? 1.0 / dt_s : 0.0;
   const CaTable& t = p.ca;
   const double ux0 = p.flow_velocity_m_s.x(), uy0 = p.flow_velocity_m_s.y(), uz0 = p.flow_velocity_m_s.z();
+  // The water's acceleration (flow_acceleration.hpp): per sphere, uniform, or none (still water: no term at all,
+  // so the forces are bit for bit those of the model without it). A branch that is the same for every sphere.
+  const double* flow_accel = a.flow_acceleration_m_s2;
+  const double ax0 = p.flow_acceleration_m_s2.x(), ay0 = p.flow_acceleration_m_s2.y(),
+               az0 = p.flow_acceleration_m_s2.z();
+  const bool has_flow_accel = flow_accel || !p.flow_acceleration_m_s2.isZero();
 
   for (std::size_t i = 0; i < a.n; ++i) {
     if constexpr (kMasked)
@@ -70,8 +77,10 @@ void kernel(const FluidParams& p, const KernelArrays& a, double dt_s) {
       const double* vv = a.v_m_s + 3 * i;
       vx = vv[0], vy = vv[1], vz = vv[2];
       // A sphere without history has an all-zero state (engines zero new rows), so st[2] = 0 and the
-      // product test alone says "not reversed"; only the explicit acceleration needs the flag itself.
-      reversed = vz * st[2] < 0.0;
+      // product test alone says "not reversed"; only the explicit acceleration needs the flag itself. The
+      // reversal is of the motion relative to the water (motion_reversed, fluid.hpp): uz = 0 in still water.
+      const double uz = a.flow_m_s ? a.flow_m_s[3 * i + 2] : uz0;
+      reversed = (vz - uz) * (st[2] - uz) < 0.0;
       if constexpr (!kImplicit && kAddedMass)
         if (st[3] != 0.0) ax = (vx - st[0]) * inv_dt, ay = (vy - st[1]) * inv_dt, az = (vz - st[2]) * inv_dt;
     }
@@ -105,9 +114,10 @@ void kernel(const FluidParams& p, const KernelArrays& a, double dt_s) {
           Fx += k * ux, Fy += k * uy, Fz += k * uz;
         }
       }
+      CaRow ca{0.0, 0.0, 0.0};
+      const double rho_vs = rho_pi3 * h2_3r_minus_h;
       if constexpr (kAddedMass) {
-        const CaRow ca = wetted_ca(t, h, two_r, reversed);
-        const double rho_vs = rho_pi3 * h2_3r_minus_h;
+        ca = wetted_ca(t, h, two_r, reversed);
         if constexpr (kImplicit) {
           sx = implicit_scale(m, added_mass_kg(rho_vs, ca.x));
           if constexpr (kSymXY)
@@ -120,9 +130,15 @@ void kernel(const FluidParams& p, const KernelArrays& a, double dt_s) {
               Fz -= added_mass_kg(rho_vs, ca.z) * az;
         }
       }
+      if (has_flow_accel) {
+        const double* da = flow_accel ? flow_accel + 3 * i : nullptr;
+        Fx += flow_acceleration_force_N(rho_vs, ca.x, da ? da[0] : ax0);
+        Fy += flow_acceleration_force_N(rho_vs, ca.y, da ? da[1] : ay0);
+        Fz += flow_acceleration_force_N(rho_vs, ca.z, da ? da[2] : az0);
+      }
     }
 
-    if constexpr (kDrag || !kAddedMass || !kImplicit) {
+    if (kDrag || !kAddedMass || !kImplicit || has_flow_accel) {
       f[0] = scaled_total_force(f[0], Fx, sx), f[1] = scaled_total_force(f[1], Fy, sy);
     } else {  // implicit added mass alone: no horizontal force of ours, only the scale (no + 0.0 to pay)
       f[0] *= sx, f[1] *= sy;

@@ -35,6 +35,7 @@ std::vector<std::string> FluidParams::problems() const {
   if (!(gravity_m_s2 >= 0) || !std::isfinite(gravity_m_s2))
     out.push_back(fmt::format("gravity = {}: must be >= 0 (m/s^2)", gravity_m_s2));
   if (!finite(flow_velocity_m_s)) out.push_back("flow_velocity: must be finite (m/s)");
+  if (!finite(flow_acceleration_m_s2)) out.push_back("flow_acceleration: must be finite (m/s^2)");
   if (!(drag_coefficient >= 0) || !std::isfinite(drag_coefficient))
     out.push_back(fmt::format("drag_coefficient = {}: must be >= 0", drag_coefficient));
   if (!(kinematic_viscosity_m2_s > 0) || !std::isfinite(kinematic_viscosity_m2_s))

@@ -357,7 +357,9 @@ void World::apply_fluid() {
     const dReal* p = dBodyGetPosition(s.body);
     const dReal* v = dBodyGetLinearVel(s.body);
     const Vec3 x(p[0], p[1], p[2]), vel(v[0], v[1], v[2]);
-    if (!hull_flow_.empty()) params.flow_velocity_m_s = hull_flow_.at(x - flow_frame);
+    // U_flow and Du/Dt (earth frame) at the sphere: the drag on the relative velocity, the pressure gradient
+    // and the added mass on the relative acceleration (core flow_acceleration.hpp)
+    if (!hull_flow_.empty()) hull_flow_.at(x - flow_frame, params.flow_velocity_m_s, params.flow_acceleration_m_s2);
     s.last = core::evaluate(params, core::Sphere{s.radius_m, s.mass_kg, x, vel}, s.state, stepper_.dt_s);
     const Vec3 gravity(0.0, 0.0, -s.mass_kg * g);
     const bool effective_mass = mode_ == ImplicitMode::EffectiveMass && core::implicit_added_mass(fluid_);

@@ -5,6 +5,7 @@
 #pragma once
 #include <brash/core/hull_flow.hpp>
 #include <brash/core/panel_flow.hpp>
+#include <brash/hull/flow.hpp>
 #include <brash/hull/mesh.hpp>
 #include <filesystem>
 #include <optional>
@@ -29,6 +30,8 @@ struct PanelFlowSettings {
   double far_factor = 5.0;                         // point source beyond this many panel diameters
   double table_spacing_fraction_of_draft = 0.125;  // as ThinShipSettings
   double margin_fraction_of_breadth = 1.0;         // as ThinShipSettings
+  NearHullSettings near_hull{};                    // as ThinShipSettings
+  TableWindow window{};                            // none: the whole table
 };
 
 // The double-body solution of `mesh` moving at ship_speed_m_s along x with the water at height water_z_m of
@@ -38,8 +41,12 @@ struct PanelFlowSettings {
 core::PanelSolution panel_solution(const Mesh& mesh, double water_z_m, double ship_speed_m_s,
                                    const PanelFlowSettings& settings = {});
 
-// Its table, on the box and spacing of thin_ship_flow's table for the same hull (flow.hpp).
+// Its table, on the box and spacing of thin_ship_flow's table for the same hull (flow.hpp), with the same
+// treatment along the hull (nodes inside it never sampled, cells along it refined) and Du/Dt.
 core::FlowTable panel_flow(const Mesh& mesh, double water_z_m, double ship_speed_m_s,
+                           const PanelFlowSettings& settings = {});
+// ... of a solution already at hand (panel_solution of the same mesh, water level and settings)
+core::FlowTable panel_flow(const core::PanelSolution& solution, const Mesh& mesh, double water_z_m,
                            const PanelFlowSettings& settings = {});
 
 // A flow table in a binary file headed by `key` (what it was computed from); read_flow_table returns nothing

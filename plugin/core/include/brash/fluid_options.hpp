@@ -10,6 +10,10 @@ enum class FluidModel { Drag, AddedMass, Both };   // Eq. 1, Eq. 2, Eq. 1 + Eq. 
 enum class Treatment { Explicit, Implicit };       // lagged acceleration vs mass augmentation
 enum class DragLaw { Constant, SchillerNaumann };  // C_D constant or C_D(Re)
 enum class HullFlow { None, ThinShip, Panel };     // still water, or the flow around the hull (drag's U_flow)
+// How the hull's flow acts on a piece: Full = the table valid up to the hull and the forces of the water's
+// acceleration with the drag; Drag = that table, the drag alone; DragRegularTable = the drag alone from a regular
+// table that samples nodes inside the hull (the coupling of versions before 0.9, kept to measure the corrections)
+enum class HullFlowCoupling { Full, Drag, DragRegularTable };
 
 // Defaults of the fluid parameters, one value for the core (brash::core::FluidParams), the case file (brash::Case)
 // and the engines' own keywords (the YADE module passes them on to Python as brash_yade.DEFAULT_*).
@@ -33,6 +37,10 @@ constexpr std::string_view to_string(DragLaw d) {
 
 constexpr std::string_view to_string(HullFlow h) {
   return h == HullFlow::None ? "none" : h == HullFlow::ThinShip ? "thin_ship" : "panel";
+}
+
+constexpr std::string_view to_string(HullFlowCoupling h) {
+  return h == HullFlowCoupling::Full ? "full" : h == HullFlowCoupling::Drag ? "drag" : "drag_regular_table";
 }
 
 }  // namespace brash

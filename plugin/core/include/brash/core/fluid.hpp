@@ -8,12 +8,16 @@
 //
 // Implicit treatment solves (m + m_a) a = F per axis, i.e. scales the force the integrator divides by m
 // with m / (m + m_a) (added_mass.hpp); explicit adds F_a = -m_a a with the lagged a = (v - v_prev) / dt.
+// In a flow that accelerates (FluidParams::flow_acceleration_m_s2, the hull's flow) F also holds
+// rho V_s (1 + C_a) Du/Dt (flow_acceleration.hpp): the added mass then acts on the acceleration relative to
+// the water, and the drag on the velocity relative to it.
 #pragma once
 #include <cmath>
 #include <cstddef>
 
 #include "brash/core/added_mass.hpp"
 #include "brash/core/drag.hpp"
+#include "brash/core/flow_acceleration.hpp"
 #include "brash/core/immersion.hpp"
 #include "brash/core/params.hpp"
 
@@ -41,9 +45,11 @@ struct FluidOutput {
   bool reversed = false;
 };
 
-// "Motion reversed": the vertical velocity changed sign over the last step (no hysteresis).
-inline bool motion_reversed(const FluidState& st, const Vec3& v) {
-  return st.has_prev && v.z() * st.velocity_prev_m_s.z() < 0.0;
+// "Motion reversed": the vertical velocity relative to the water changed sign over the last step (no
+// hysteresis). The water's vertical velocity flow_z at the last step is taken as this step's (it changes by
+// O(dt Du/Dt) in a step); in still water (flow_z = 0) this is exactly the sign change of v_z.
+inline bool motion_reversed(const FluidState& st, const Vec3& v, double flow_z_m_s = 0.0) {
+  return st.has_prev && (v.z() - flow_z_m_s) * (st.velocity_prev_m_s.z() - flow_z_m_s) < 0.0;
 }
 
 // Table 1: coefficients for the sphere's immersion state.
@@ -75,7 +81,7 @@ inline FluidOutput evaluate(const FluidParams& p, const Sphere& s, const FluidSt
   if (p.apply_gravity) out.force_N.z() -= s.mass_kg * p.gravity_m_s2;
   if (p.has_drag()) out.force_N += drag_force(p, s.radius_m, out.immersion, s.velocity_m_s);
   if (p.has_added_mass()) {
-    out.reversed = motion_reversed(st, s.velocity_m_s);
+    out.reversed = motion_reversed(st, s.velocity_m_s, p.flow_velocity_m_s.z());
     out.ca = select_ca(p.ca, s.radius_m, out.immersion, out.reversed);
     out.added_mass_kg = added_mass_kg(p.water_density_kg_m3 * out.immersion.volume_m3, out.ca);
     if (p.treatment == Treatment::Implicit) {
@@ -84,6 +90,11 @@ inline FluidOutput evaluate(const FluidParams& p, const Sphere& s, const FluidSt
       const Vec3 accel = (s.velocity_m_s - st.velocity_prev_m_s) / dt_s;
       out.force_N -= out.added_mass_kg.cwiseProduct(accel);
     }
+  }
+  if (!p.flow_acceleration_m_s2.isZero()) {  // the water's acceleration (flow_acceleration.hpp)
+    const double rho_vs = p.water_density_kg_m3 * out.immersion.volume_m3;
+    for (int k = 0; k < 3; ++k)
+      out.force_N[k] += flow_acceleration_force_N(rho_vs, out.ca[k], p.flow_acceleration_m_s2[k]);
   }
   return out;
 }

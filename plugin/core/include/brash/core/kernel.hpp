@@ -34,6 +34,9 @@ struct KernelArrays {
   double* f_N = nullptr;          // n x 3: every other force on entry, the total on exit
   const double* flow_m_s = nullptr;  // n x 3: each sphere's flow velocity (drag: u = v - flow), or null for
                                      // the uniform FluidParams::flow_velocity_m_s
+  const double* flow_acceleration_m_s2 = nullptr;  // n x 3: each sphere's Du/Dt of that flow
+                                                   // (flow_acceleration.hpp), or null for the uniform
+                                                   // FluidParams::flow_acceleration_m_s2
   double* state = nullptr;        // n x kStateStride
   double* output = nullptr;       // n x kOutputStride, or null (filled by a pass after the forces)
   const int* mask = nullptr;      // null = all spheres; else sphere i is used if mask[i] & groupbit

@@ -49,6 +49,9 @@ struct FluidParams {
   double gravity_m_s2 = kDefaultGravity_m_s2;
   bool apply_gravity = false;                 // add -m g here (else the engine's own gravity does)
   Vec3 flow_velocity_m_s = Vec3::Zero();
+  // Du/Dt of that flow, earth frame (flow_acceleration.hpp): the pressure-gradient force and the added mass's
+  // reaction to the relative acceleration; zero in still water (and then no term is computed at all)
+  Vec3 flow_acceleration_m_s2 = Vec3::Zero();
   FluidModel model = FluidModel::Both;
   Treatment treatment = Treatment::Implicit;
   DragLaw drag_law = DragLaw::Constant;

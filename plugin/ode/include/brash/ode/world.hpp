@@ -191,7 +191,8 @@ class World {
   // The water's flow around the hull (fluid.hull_flow; brash::hull::thin_ship_flow): a table in the hull's
   // frame, x and y from the hull body's position, z = 0 at the water level (FluidParams::water_level_m). From
   // the next step on, each sphere's drag acts on its velocity relative to the table's flow at its centre, at
-  // the hull's position at the start of the step (as fix icefluid's hull_flow). Needs the hull (set_hull) and
+  // the hull's position at the start of the step (as fix icefluid's hull_flow), and the table's Du/Dt adds the
+  // pressure-gradient force and the added mass on the relative acceleration (core flow_acceleration.hpp). Needs the hull (set_hull) and
   // a fluid model with drag (throws std::invalid_argument otherwise). Not in restart files: a resumed run
   // sets it again.
   void set_hull_flow(core::FlowTable table);
