@@ -137,8 +137,7 @@ void FixIceFluid::parse(int narg, char** arg) {
             FLERR,
             "fix icefluid: 'flow' and 'hull_flow' exclude each other (the hull's flow is in still water)");
       if (!params_.has_drag())
-        error->all(FLERR, "fix icefluid: 'hull_flow' acts through the drag (on the velocity relative to the "
-                          "water), and model added_mass has none");
+        error->all(FLERR, "fix icefluid: 'hull_flow' acts through the drag, and model added_mass has none");
       // Every rank builds the same table from the same file (deterministic): no communication,
       // rank-independent. The mesh reader's and the table's errors name the file or the problem, not the fix.
       try {

@@ -79,8 +79,9 @@ void kernel(const FluidParams& p, const KernelArrays& a, double dt_s) {
       // A sphere without history has an all-zero state (engines zero new rows), so st[2] = 0 and the
       // product test alone says "not reversed"; only the explicit acceleration needs the flag itself. The
       // reversal is of the motion relative to the water (motion_reversed, fluid.hpp): uz = 0 in still water.
+      // With a flow a sphere without history would compare with uz: it needs its evaluated flag (st[3] != 0).
       const double uz = a.flow_m_s ? a.flow_m_s[3 * i + 2] : uz0;
-      reversed = (vz - uz) * (st[2] - uz) < 0.0;
+      reversed = (vz - uz) * (st[2] - uz) < 0.0 && (uz == 0.0 || st[3] != 0.0);
       if constexpr (!kImplicit && kAddedMass)
         if (st[3] != 0.0) ax = (vx - st[0]) * inv_dt, ay = (vy - st[1]) * inv_dt, az = (vz - st[2]) * inv_dt;
     }
