@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Benchmark: the cost of a LIGGGHTS step in the hull's panel flow, with the coupling before 0.9 (the drag alone,
+# Benchmark: the cost of a LIGGGHTS step in the hull's panel flow, with the coupling of earlier versions (the drag alone,
 # a regular table: fluid.hull_flow_coupling drag_regular_table) and with today's (the table valid up to the hull,
 # the water's acceleration: full), on the same scene. Prints ratios measured in this one run:
 #   instructions: callgrind over N steps of each (independent of the machine's load);

@@ -331,7 +331,7 @@ const KeySpec kFluid[] = {
         "hull_flow_coupling",
         "how fluid.hull_flow acts: full (the drag on the relative velocity and the water's acceleration, from a "
         "table valid up to the hull), drag (the drag alone, same table) or drag_regular_table (the drag alone, "
-        "a regular table that samples inside the hull: the coupling before 0.9)",
+        "a regular table that samples inside the hull: the coupling of earlier versions)",
         [](const Case& c) { return c.fluid.hull_flow != HullFlow::None; }),
 };
 

@@ -94,7 +94,7 @@ TEST(CaseHullFlow, PanelFlowIsCachedBesideThePackingAndKeyed) {
 }
 
 // fluid.hull_flow_coupling: full holds Du/Dt and the bricks along the hull; drag the same bricks without Du/Dt;
-// drag_regular_table neither (the table before 0.9, which samples the field inside the hull). Each its own cache key.
+// drag_regular_table neither (the table of earlier versions, which samples the field inside the hull). Each its own cache key.
 TEST(CaseHullFlow, CouplingChoosesTheTable) {
   const fs::path dir = fs::temp_directory_path() / "brash_test_case_hull_flow_coupling";
   fs::remove_all(dir);

@@ -27,7 +27,7 @@ struct NearHullSettings {
   // core::FlowRefinement::clearance_m: no piece's centre comes closer to the hull than about its radius
   double clearance_m = 0.0;
   // Full: the table above with Du/Dt; Drag: the same without Du/Dt; DragRegularTable: a regular table that samples
-  // the field inside the hull too, without Du/Dt (the coupling before 0.9).
+  // the field inside the hull too, without Du/Dt (the coupling of earlier versions).
   HullFlowCoupling coupling = HullFlowCoupling::Full;
 };
 

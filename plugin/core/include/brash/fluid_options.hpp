@@ -12,7 +12,7 @@ enum class DragLaw { Constant, SchillerNaumann };  // C_D constant or C_D(Re)
 enum class HullFlow { None, ThinShip, Panel };     // still water, or the flow around the hull (drag's U_flow)
 // How the hull's flow acts on a piece: Full = the table valid up to the hull and the forces of the water's
 // acceleration with the drag; Drag = that table, the drag alone; DragRegularTable = the drag alone from a regular
-// table that samples nodes inside the hull (the coupling of versions before 0.9, kept to measure the corrections)
+// table that samples nodes inside the hull (the coupling of earlier versions, kept to measure the corrections)
 enum class HullFlowCoupling { Full, Drag, DragRegularTable };
 
 // Defaults of the fluid parameters, one value for the core (brash::core::FluidParams), the case file (brash::Case)
