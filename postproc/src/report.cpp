@@ -250,8 +250,11 @@ RunAnalysis analyze_run(const std::filesystem::path& run_dir) {
   a.fz = stats::block_average(slice(a.force.fz_N, w.i0, w.i1));
   const auto resistance_N = negated(slice(a.force.fx_N, w.i0, w.i1));
   a.resistance = stats::block_average(resistance_N);
-  for (const auto& part : a.force.split_N)
-    a.resistance_split.push_back(stats::block_average(negated(slice(part, w.i0, w.i1))));
+  for (const auto& part : a.force.split_N) {
+    const auto samples = slice(part, w.i0, w.i1);
+    a.resistance_split.push_back(stats::block_average(negated(samples)));
+    a.split_contact.push_back(std::any_of(samples.begin(), samples.end(), [](double f) { return f != 0; }));
+  }
   if (a.force.split_N.empty())
     a.split_not_recorded =
         !a.meta.hull_split_not_recorded.empty() ? a.meta.hull_split_not_recorded
@@ -373,6 +376,10 @@ std::string split_markdown(const RunAnalysis& a) {
   const auto labels = split_part_labels(a.meta);
   for (std::size_t k = 0; k < a.resistance_split.size(); ++k) {
     const auto& b = a.resistance_split[k];
+    if (!a.split_contact[k]) {  // every sample exactly zero: the part touched no ice (nothing measured, not 0 N)
+      md += fmt::format("| {} | no contact | 0 % | no contact |\n", labels[k]);
+      continue;
+    }
     md += fmt::format("| {} | {:.4f} ± {:.4f} N | {} | {:.1f} ± {:.1f} kN |\n", labels[k], b.mean, b.ci95,
                       a.resistance.mean != 0 ? fmt::format("{:.0f} %", 100 * b.mean / a.resistance.mean) : "n/a",
                       b.mean * to_kN, b.ci95 * to_kN);
@@ -521,7 +528,8 @@ nlohmann::ordered_json report_json(const RunAnalysis& a) {
     for (std::size_t k = 0; k < a.resistance_split.size(); ++k)
       split[kSplitParts[k]] = {{"mean", a.resistance_split[k].mean},
                                {"ci95", a.resistance_split[k].ci95},
-                               {"plateau_found", a.resistance_split[k].plateau_found}};
+                               {"plateau_found", a.resistance_split[k].plateau_found},
+                               {"contact", a.split_contact[k]}};
     if (const auto& p = a.meta.hull_split_par_m) split["x_par_m"] = {(*p)[0], (*p)[1]};
     j["resistance_split_model_N"] = split;
   }

@@ -86,6 +86,7 @@ class SplitPart:
     ci95_N: float
     full_kN: float | None
     full_ci95_kN: float | None
+    contact: bool = True  # False: the part touched no ice in the window (its 0 is "no contact")
 
 
 @dataclass(frozen=True)
@@ -100,7 +101,8 @@ class ResistanceSplit:
         return self.parts[part]
 
     def __str__(self) -> str:
-        return "; ".join(f"{name} {p.mean_N:.4g} ± {p.ci95_N:.2g} N" for name, p in self.parts.items())
+        return "; ".join(f"{name} {p.mean_N:.4g} ± {p.ci95_N:.2g} N" if p.contact else f"{name} no contact"
+                         for name, p in self.parts.items())
 
 
 class Run:
@@ -386,6 +388,6 @@ class Run:
                 raise RunError(f"{file}: resistance_split_model_N.{name} has no mean / ci95: {p!r}")
             mean, ci95 = float(p["mean"]), float(p["ci95"])
             parts[name] = SplitPart(mean, ci95, None if to_kN is None else mean * to_kN,
-                                    None if to_kN is None else ci95 * to_kN)
+                                    None if to_kN is None else ci95 * to_kN, bool(p.get("contact", True)))
         x_par = split.get("x_par_m")
         return ResistanceSplit(parts, (float(x_par[0]), float(x_par[1])) if isinstance(x_par, list) else None)

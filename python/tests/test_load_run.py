@@ -256,6 +256,17 @@ class ResistanceSplitTest(unittest.TestCase):
         self.assertEqual(s.x_par_m, (1.25, 4.5))
         self.assertAlmostEqual(sum(s[p].mean_N for p in ("bow", "mid", "stern")), 2.5)
         self.assertIn("tangential 0.5", str(s))
+        self.assertTrue(s["stern"].contact)  # a report from before "contact" was recorded
+
+    def test_part_that_touched_no_ice_says_no_contact(self):
+        split = {p: {"mean": 1.0, "ci95": 0.1, "contact": True} for p in brash.SPLIT_PARTS}
+        split["stern"] = {"mean": 0.0, "ci95": 0.0, "contact": False}
+        (self.run_dir / "report.json").write_text(json.dumps(dict(REPORT, resistance_split_model_N=split)))
+        s = brash.load_run(self.run_dir).resistance_split()
+        self.assertFalse(s["stern"].contact)
+        self.assertTrue(s["bow"].contact)
+        self.assertIn("stern no contact", str(s))
+        self.assertNotIn("stern 0", str(s))
 
     def test_no_split_says_why(self):
         report = dict(REPORT, resistance_split_model_N=None,

@@ -32,6 +32,7 @@ struct SyntheticRun {
   // the hull force split's columns (fx_bow_N .. fx_tangential_N): bow 0.6 fx + a, mid 0.3 fx - a, stern 0.1 fx,
   // normal 0.8 fx + b, tangential the rest (a, b: noise of their own)
   bool split = false;
+  bool split_stern_untouched = false;  // the stern touches no ice: 0 exactly, its tenth of fx on the mid-body
   std::vector<std::vector<double>> split_series;  // written values, one vector per column
   // Written values (read back by the tests).
   std::vector<double> t_s, fx_N, fy_N_series, fz_N_series;
@@ -109,7 +110,8 @@ inline void write_synthetic_run(const std::filesystem::path& dir, SyntheticRun& 
     csv += fmt::format("{},{},{},{}", t, r.fx_N.back(), r.fy_N_series.back(), r.fz_N_series.back());
     if (r.split) {
       const double fx = r.fx_N.back(), a = 0.2 * e(rng), b = 0.1 * e(rng);
-      const double parts[5] = {0.6 * fx + a, 0.3 * fx - a, 0.1 * fx, 0.8 * fx + b, 0.2 * fx - b};
+      const double stern = r.split_stern_untouched ? 0.0 : 0.1 * fx;
+      const double parts[5] = {0.6 * fx + a, 0.4 * fx - a - stern, stern, 0.8 * fx + b, 0.2 * fx - b};
       for (std::size_t k = 0; k < 5; ++k) {
         r.split_series[k].push_back(parts[k]);
         csv += fmt::format(",{}", parts[k]);

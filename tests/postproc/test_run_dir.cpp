@@ -594,6 +594,23 @@ TEST(RunDir, HullForceSplitIsAveragedLikeTheResistance) {
   EXPECT_NE(md.find("| tangential (friction) | "), std::string::npos) << md;
 }
 
+// A part of the hull that touched no ice in the window says so ("no contact"), never "0.0000 ± 0.0000 N".
+TEST(RunDir, SplitPartThatTouchedNoIceSaysNoContact) {
+  const auto dir = scratch("split_no_stern");
+  SyntheticRun r;
+  r.split = true;
+  r.split_stern_untouched = true;
+  write_synthetic_run(dir, r);
+  const auto j = run_cli(dir);
+  const auto& S = j["resistance_split_model_N"];
+  ASSERT_TRUE(S.is_object()) << j.dump(2);
+  EXPECT_FALSE(S["stern"]["contact"].get<bool>());
+  for (const char* part : {"bow", "mid", "normal", "tangential"}) EXPECT_TRUE(S[part]["contact"].get<bool>()) << part;
+  const std::string md = brash::post::read_text_file(dir / "report.md");
+  EXPECT_NE(md.find("| stern | no contact | 0 % | no contact |"), std::string::npos) << md;
+  EXPECT_EQ(md.find("0.0000 ± 0.0000 N"), std::string::npos) << md;
+}
+
 // A record without the split (an older run, YADE) has none, said in words: never a part of 0.
 TEST(RunDir, RecordWithoutTheSplitSaysItIsNotRecorded) {
   const auto dir = scratch("nosplit");

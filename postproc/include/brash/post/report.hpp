@@ -68,6 +68,7 @@ struct RunAnalysis {
   // part, in kSplitParts' order, as resistance is averaged; empty when the record has no split, and then
   // split_not_recorded says why (never shown as 0).
   std::vector<stats::BlockingResult> resistance_split;
+  std::vector<bool> split_contact;  // per part: whether it touched ice in the window (else "no contact", not 0)
   std::string split_not_recorded;
   std::optional<stats::HalvesTrend> resistance_trend;  // the window's two halves (>= kMinTrendSamples samples)
   double resistance_full_kN = 0, resistance_full_ci95_kN = 0;
