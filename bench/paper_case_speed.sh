@@ -5,6 +5,8 @@
 # the moving window too: evidence/paper-liggghts-both-window) over each run with every piece integrated, per model
 # second and for the whole run to the same early stop. The runs themselves take
 # hours (docs/performance.md "The paper case on 2 cores" has their commands); this prints what they recorded.
+# Runs that record their stages (meta.json "stages": packing, settling, set-up, run, report) are then printed stage
+# by stage by bench/run_stages.sh, the first of them the baseline of its ratios.
 #   bash bench/paper_case_speed.sh [EVIDENCE_DIR (evidence)]
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
@@ -42,3 +44,15 @@ for f in fasts[1:]:
     print(f"speed-up of {f['name']} on {fasts[0]['name']}: {fasts[0]['wall'] / fasts[0]['t'] / (f['wall'] / f['t']):.2f}x "
           f"per model second; window means {f['kn']:.1f} and {fasts[0]['kn']:.1f} kN ({100 * (f['kn'] / fasts[0]['kn'] - 1):+.2f} %)")
 EOF
+staged=()
+for d in "$ev"/paper-liggghts-*/; do
+  if /usr/bin/python3 -c 'import json,sys; sys.exit(0 if "stages" in json.load(open(sys.argv[1])) else 1)' \
+      "$d/meta.json" 2> /dev/null; then
+    staged+=("$d")
+  fi
+done
+if [ ${#staged[@]} -gt 0 ]; then
+  echo
+  echo "From a new packing, stage by stage (wall s; cached stages at what making them cost):"
+  bash "$here/bench/run_stages.sh" "${staged[@]}"
+fi

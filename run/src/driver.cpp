@@ -1,5 +1,6 @@
 #include "brash/run/driver.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <fmt/format.h>
@@ -13,6 +14,7 @@
 #include "brash/run/force_record.hpp"
 #include "brash/run/run_layout.hpp"
 #include "brash/run/settle.hpp"
+#include "brash/run/stages.hpp"
 #include "run_monitor.hpp"
 #include "stop_signals.hpp"
 
@@ -69,6 +71,16 @@ nlohmann::json initial_meta(const Engine& engine, const Case& c, std::size_t par
   const nlohmann::json engine_meta = engine.meta();
   for (const auto& [key, value] : engine_meta.items()) meta[key] = value;
   return meta;
+}
+
+// meta.json "stages" of a new run (brash/run/stages.hpp): what the packing and the settled bed cost, made now or
+// before, and the set-up of the scene; run_s and post_s follow when the run and its report are done.
+nlohmann::json initial_stages(const Case& c, bool packing_made_now, bool bed_made_now, const fs::path& start_file,
+                              double setup_s) {
+  nlohmann::json s = {{"packing", made_input(packing_wall_s(c.ice.packing_file), packing_made_now)}};
+  if (c.ice.settle) s["settling"] = made_input(settled_bed_wall_s(start_file), bed_made_now);
+  s["setup_s"] = setup_s;
+  return s;
 }
 
 // The attempt of a run: from the start, or from the newest restart point that can be read (a restart file that
@@ -204,10 +216,13 @@ int drive(Engine& engine, const DriverOptions& o) {
   try {
     const fs::path case_file = case_file_of(o);
     const Case c = load_run_case(o, tag);
+    const bool packing_made_now = !fs::exists(c.ice.packing_file);
     prepare_case_inputs(c, case_file, tag);
     refuse_what_the_engine_cannot_run(c, case_file, engine);
     Case start = c;  // the packing, or its settled bed (ice.settle, brash/run/settle.hpp)
+    const bool bed_made_now = c.ice.settle && !fs::exists(settled_packing_file(c));
     start.ice.packing_file = starting_packing(c, tag);
+    const auto setup_start = std::chrono::steady_clock::now();
     const auto spheres = read_case_packing(  // checked against the case before any output
         start, c.ice.settle ? kSettledBedMaxOverlapOverD : kPackingMaxOverlapOverD);
     engine.load(c, case_file, spheres);
@@ -226,6 +241,9 @@ int drive(Engine& engine, const DriverOptions& o) {
     }
     const auto old_meta = resume ? read_meta(run_dir) : nlohmann::json();
     record.emplace(run_dir, old_meta.is_object() ? old_meta : initial_meta(engine, c, spheres.size()));
+    if (!resume)  // a resume continues the run its stages describe
+      record->meta()["stages"] = initial_stages(c, packing_made_now, bed_made_now, start.ice.packing_file,
+                                                seconds_since(setup_start));
     record->meta()["status"] = "running";
     record->meta()["reason"] = "";
     record->write();
@@ -243,6 +261,7 @@ int drive(Engine& engine, const DriverOptions& o) {
     engine.finish(run_dir);
     if (early.stopped) record_early_stop(c, run_dir, early, meta);
     const int status = conclude(engine, run_dir, attempt, signals.received(), early.stopped, meta, tag);
+    if (meta.contains("stages")) meta["stages"]["run_s"] = meta["wall_time_s"];
     record->write();
     if (status != 0) return status;
     std::cerr << fmt::format("{} done in {:.1f} s ({:.3g} particle-steps/s)\n", tag, record->attempt_wall_s(),
@@ -257,7 +276,14 @@ int drive(Engine& engine, const DriverOptions& o) {
     return dynamic_cast<const InputError*>(&e) ? 2 : 1;
   }
   std::cout << run_dir.string() << "\n";
-  return o.post ? run_postprocessor(run_dir, tag) : 0;
+  if (!o.post) return 0;
+  const auto post_start = std::chrono::steady_clock::now();
+  const int post = run_postprocessor(run_dir, tag);
+  if (record->meta().contains("stages")) {
+    record->meta()["stages"]["post_s"] = seconds_since(post_start);
+    record->write();
+  }
+  return post;
 }
 
 }  // namespace brash::run

@@ -9,17 +9,12 @@
 
 #include "brash/run/force_record.hpp"
 #include "brash/run/run_layout.hpp"
+#include "brash/run/stages.hpp"
 #include "brash/stats/early_stop.hpp"
 
 namespace fs = std::filesystem;
 
 namespace brash::run {
-namespace {
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-}  // namespace
-
 RunRecord::RunRecord(fs::path run_dir, nlohmann::json meta) : run_dir_(std::move(run_dir)), meta_(std::move(meta)) {
   wall_before_s_ = meta_.value("wall_time_s", 0.0);
   particle_steps_before_ = meta_.value("particle_steps", 0.0);

@@ -7,6 +7,7 @@
 //     step, the atom and the cause, meta.json says failed with it, hull_force.csv and particles/ stay
 //     readable.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cstdlib>
 #include <filesystem>
@@ -177,12 +178,53 @@ TEST(LiggghtsGuardRunner, SettledBedIsMadeOnceCachedAndStartedFrom) {
   std::smatch first;
   ASSERT_TRUE(std::regex_search(bed, first, std::regex("\n1,([^,]+),")));
   EXPECT_NE(data.find(" " + first[1].str() + " "), std::string::npos);
-  // cached: a second run does not settle again; made again, the bed is the same to the byte
-  ASSERT_EQ(brash::test::run_runner(dir / "case", dir / "run2", dir / "run2.log"), 0);
+  // meta.json's stages: the packing and the bed made by this run, with what each cost (the bed's as its header
+  // says), the scene's set-up and the run itself (wall_time_s); no report (--no-post)
+  const auto meta = nlohmann::json::parse(brash::test::read_text(dir / "run/meta.json"));
+  const auto& stages = meta.at("stages");
+  EXPECT_TRUE(stages.at("packing").at("made_by_this_run").get<bool>());
+  EXPECT_GT(stages.at("packing").at("wall_s").get<double>(), 0);
+  EXPECT_TRUE(stages.at("settling").at("made_by_this_run").get<bool>());
+  ASSERT_TRUE(std::regex_search(bed, m, std::regex(" wall_s=([0-9.]+) ")));
+  EXPECT_GT(std::stod(m[1].str()), 0);
+  EXPECT_EQ(stages.at("settling").at("wall_s").get<double>(), std::stod(m[1].str()));
+  EXPECT_GE(stages.at("setup_s").get<double>(), 0);
+  EXPECT_EQ(stages.at("run_s").get<double>(), meta.at("wall_time_s").get<double>());
+  EXPECT_FALSE(stages.contains("post_s"));
+  // cached: a second run does not settle again and records what the bed and the packing cost when they were made;
+  // with its report, what the report cost
+  std::string with_post = brash::test::runner_command(dir / "case", dir / "run2");
+  with_post.replace(with_post.find(" --no-post"), 10, "");
+  ASSERT_EQ(WEXITSTATUS(std::system((with_post + " > '" + (dir / "run2.log").string() + "' 2>&1").c_str())), 0)
+      << brash::test::read_text(dir / "run2.log");
   EXPECT_EQ(brash::test::read_text(dir / "run2.log").find("settling the packing"), std::string::npos);
+  const auto stages2 = nlohmann::json::parse(brash::test::read_text(dir / "run2/meta.json")).at("stages");
+  EXPECT_FALSE(stages2.at("packing").at("made_by_this_run").get<bool>());
+  EXPECT_EQ(stages2.at("packing").at("wall_s"), stages.at("packing").at("wall_s"));
+  EXPECT_FALSE(stages2.at("settling").at("made_by_this_run").get<bool>());
+  EXPECT_EQ(stages2.at("settling").at("wall_s"), stages.at("settling").at("wall_s"));
+  EXPECT_GT(stages2.at("post_s").get<double>(), 0);
+  // bench/run_stages.sh prints them stage by stage with each run's total from a new packing and its ratio to the
+  // first run's; a run directory without stages is refused by name
+  const auto stage_table = [&](const std::string& runs) {
+    const std::string cmd = "bash '" + std::string(BRASH_SOURCE_DIR) + "/bench/run_stages.sh' " + runs + " > '" +
+                            (dir / "stages.txt").string() + "' 2>&1";
+    return WEXITSTATUS(std::system(cmd.c_str()));
+  };
+  ASSERT_EQ(stage_table("'" + (dir / "run").string() + "' '" + (dir / "run2").string() + "'"), 0);
+  const std::string table = brash::test::read_text(dir / "stages.txt");
+  EXPECT_TRUE(std::regex_search(table, std::regex(R"(\nrun .* 1\.00x\n)"))) << table;
+  EXPECT_TRUE(std::regex_search(table, std::regex(R"(\nrun2 .*\(cached\).*\(cached\).* [0-9.]+x\n)"))) << table;
+  fs::create_directories(dir / "old");
+  std::ofstream(dir / "old/meta.json") << "{\"status\": \"complete\"}";
+  EXPECT_NE(stage_table("'" + (dir / "old").string() + "'"), 0);
+  EXPECT_NE(brash::test::read_text(dir / "stages.txt").find("old/meta.json: no \"stages\""), std::string::npos)
+      << brash::test::read_text(dir / "stages.txt");
+  // made again, the bed is the same to the byte but for the wall time its header records
   fs::remove(settled[0]);
   ASSERT_EQ(brash::test::run_runner(dir / "case", dir / "run3", dir / "run3.log"), 0);
-  EXPECT_EQ(brash::test::read_text(settled[0]), bed);
+  const auto untimed = [](const std::string& b) { return std::regex_replace(b, std::regex(" wall_s=[0-9.]+ "), " "); };
+  EXPECT_EQ(untimed(brash::test::read_text(settled[0])), untimed(bed));
   // ODE starts from the same bed (its first snapshot holds piece 1 where the bed has it), the bed's overlaps within
   // the surface layer
   const std::string ode = std::string(BRASH_BIN_DIR) + "/brash-ode '" + (dir / "case").string() + "' --out '" +

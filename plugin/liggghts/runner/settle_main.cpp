@@ -1,6 +1,7 @@
 // brash-settle CASE_FILE --out SETTLED_CSV: the case's packing floated and settled with LIGGGHTS on one rank (no
 // ship, closed channel ends) until the pieces' rms speed is below ice.settle_speed_m_s, written as a packing file
 // (id,x,y,z,diameter; ids kept). The run driver calls it for ice.settle (brash/run/settle.hpp) and caches the file.
+#include <chrono>
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
@@ -20,6 +21,7 @@
 #include "brash/run/guard.hpp"
 #include "brash/packing.hpp"
 #include "brash/run/run_layout.hpp"
+#include "brash/run/stages.hpp"
 #include "brash/run/runner_setup.hpp"
 #include "brash/run/settle.hpp"
 #include "liggghts_input.h"
@@ -87,6 +89,7 @@ std::string packing_rows(const fs::path& dump) {
 }
 
 int settle(const fs::path& case_file, const fs::path& out, double max_s) {
+  const auto t0 = std::chrono::steady_clock::now();
   const Case c = load_case(case_file);
   const auto spheres = read_case_packing(c);
   // the scene's domain without a ship: the channel, its open-water margin and the water column
@@ -113,8 +116,10 @@ int settle(const fs::path& case_file, const fs::path& out, double max_s) {
     throw InputError(fmt::format("{}: the bed did not settle within {} s: rms speed {:.3g} m/s >= ice.settle_speed_m_s "
                                  "= {} m/s (its log: {})",
                                  case_file.string(), max_s, vrms, c.ice.settle_speed_m_s, (work / "log.txt").string()));
-  const std::string header = fmt::format("# brash-settle from={} t_s={:.6g} vrms_m_s={:.6g} {}\n",
-                                         c.ice.packing_file.filename().string(), t_s, vrms, settle_inputs(c));
+  // wall_s: what making the bed cost, read by the runs that start from it (brash/run/stages.hpp)
+  const std::string header = fmt::format("# brash-settle from={} t_s={:.6g} vrms_m_s={:.6g} wall_s={:.1f} {}\n",
+                                         c.ice.packing_file.filename().string(), t_s, vrms, run::seconds_since(t0),
+                                         settle_inputs(c));
   run::write_atomic(out, header + packing_rows(work / "settled.dump"));
   fs::remove_all(work);
   std::cerr << fmt::format("[brash-settle] settled at t = {:.3g} s (rms speed {:.3g} m/s): {}\n", t_s, vrms,
