@@ -55,8 +55,10 @@ FsicrResult fsicr_channel_resistance(const FsicrParams& p, IceClass ice_class, c
     r.C2_N = (1 + 0.063 * p.phi1_deg) * (k.g1 + k.g2 * B) + k.g3 * (1 + 1.2 * T / B) * B * B / std::sqrt(L);
   }
   const double hh = r.H_F_m + r.H_M_m;
-  r.R_CH_N = r.C1_N + r.C2_N + k.C3 * r.Cmu * hh * hh * (p.B_m + r.Cpsi * r.H_F_m) +
-             k.C4 * p.L_par_m * r.H_F_m * r.H_F_m + k.C5 * r.LTB3_used * p.A_wf_m2 / p.L_m;
+  r.bow_term_N = k.C3 * r.Cmu * hh * hh * (p.B_m + r.Cpsi * r.H_F_m);
+  r.midbody_term_N = k.C4 * p.L_par_m * r.H_F_m * r.H_F_m;
+  r.form_term_N = k.C5 * r.LTB3_used * p.A_wf_m2 / p.L_m;
+  r.R_CH_N = r.C1_N + r.C2_N + r.bow_term_N + r.midbody_term_N + r.form_term_N;
   return r;
 }
 

@@ -388,6 +388,35 @@ std::string split_markdown(const RunAnalysis& a) {
               "\"The hull force split\").\n\n";
 }
 
+// R_CH's terms beside the hull force split's parts, full scale (docs/fsicr_vs_paper.md): the bow term against the
+// bow, the mid-body term against the parallel mid-body; the form term and the stern have no counterpart.
+std::string fsicr_terms_markdown(const RunAnalysis& a) {
+  const auto& r = a.fsicr.result;
+  if (!r) return {};
+  const bool split = !a.resistance_split.empty() && !a.met_no_ice;
+  const double to_kN = std::pow(a.case_.scale_lambda, 3) / 1000.0;
+  const auto part = [&](std::size_t k) {
+    if (!split) return std::string("not recorded");
+    if (!a.split_contact[k]) return std::string("no contact");
+    return fmt::format("{:.1f} ± {:.1f} kN", a.resistance_split[k].mean * to_kN, a.resistance_split[k].ci95 * to_kN);
+  };
+  const auto ratio = [&](double term_N, std::size_t k) {
+    if (!split || !a.split_contact[k] || a.resistance_split[k].mean <= 0) return std::string("n/a");
+    return fmt::format("{:.2f}", term_N / 1000.0 / (a.resistance_split[k].mean * to_kN));
+  };
+  std::string md = "| FSICR term | R_CH's part | this run's part | term / part |\n|---|---|---|---|\n";
+  md += fmt::format("| bow: C3 Cmu (H_F + H_M)^2 (B + Cpsi H_F) | {:.1f} kN | bow {} | {} |\n", r->bow_term_N / 1000,
+                    part(0), ratio(r->bow_term_N, 0));
+  md += fmt::format("| parallel mid-body: C4 L_par H_F^2 | {:.1f} kN | mid-body {} | {} |\n",
+                    r->midbody_term_N / 1000, part(1), ratio(r->midbody_term_N, 1));
+  md += fmt::format("| hull form: C5 (L T / B^2)^3 A_wf / L | {:.1f} kN | (no region: stern {}) | n/a |\n",
+                    r->form_term_N / 1000, part(2));
+  if (r->C1_N + r->C2_N != 0)
+    md += fmt::format("| C1 + C2 (IA Super: the consolidated layer) | {:.1f} kN | (none) | n/a |\n",
+                      (r->C1_N + r->C2_N) / 1000);
+  return md + "\n";
+}
+
 // The ice around the hull (ice_around_hull.hpp): report.json's object, or why there is none.
 nlohmann::ordered_json ice_around_json(const RunAnalysis& a) {
   using J = nlohmann::ordered_json;
@@ -485,6 +514,8 @@ nlohmann::ordered_json report_json(const RunAnalysis& a) {
     fsicr["intermediate"] = {{"H_M_m", r->H_M_m}, {"H_F_m", r->H_F_m}, {"psi_deg", r->psi_deg},
                              {"Cmu", r->Cmu}, {"Cpsi", r->Cpsi}, {"LTB2_cubed_raw", r->LTB3_raw},
                              {"LTB2_cubed_used", r->LTB3_used}, {"C1_N", r->C1_N}, {"C2_N", r->C2_N}};
+    fsicr["terms_kN"] = {{"C1_C2", (r->C1_N + r->C2_N) / 1000.0}, {"bow", r->bow_term_N / 1000.0},
+                         {"midbody", r->midbody_term_N / 1000.0}, {"form", r->form_term_N / 1000.0}};
   } else {
     fsicr["R_CH_kN"] = nullptr;
   }
@@ -625,7 +656,7 @@ std::string report_markdown(const RunAnalysis& a) {
     md += fmt::format("R_CH = **{:.1f} kN** (H_F {:.3f} m, H_M {:.1f} m, Cmu {:.4f}, Cpsi {:.4f}, (LT/B^2)^3 {:.2f} used {:.2f}).\n\n",
                       r->R_CH_N / 1000, r->H_F_m, r->H_M_m, r->Cmu, r->Cpsi, r->LTB3_raw, r->LTB3_used);
   for (const auto& wmsg : a.fsicr.warnings) md += fmt::format("- warning: {}\n", wmsg);
-  md += "\n";
+  md += "\n" + fsicr_terms_markdown(a);
   if (a.ratio_fsicr_to_sim) md += fmt::format("FSICR / simulation = **{:.2f}**.\n\n", *a.ratio_fsicr_to_sim);
   md += reference_markdown(a);
   return md;

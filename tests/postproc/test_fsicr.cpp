@@ -38,6 +38,22 @@ TEST(Fsicr, WorkedValue990kN) {
   EXPECT_EQ(r.C2_N, 0);
 }
 
+// The terms by hand for the 990 kN value: bow C3 Cmu (H_F + H_M)^2 (B + Cpsi H_F), mid-body C4 L_par H_F^2, form
+// C5 (L T / B^2)^3 A_wf / L; they add up to R_CH exactly.
+TEST(Fsicr, TermsAddUpToRch) {
+  const auto p = panamax(25, 60, 100);
+  const auto r = fsicr_channel_resistance(p, IceClass::IA);
+  const double HF = 0.26 + std::sqrt(32.0), hh = HF + 1.0;
+  const double psi = std::atan(std::tan(60 * M_PI / 180) / std::sin(25 * M_PI / 180));
+  const double Cmu = 0.15 * std::cos(60 * M_PI / 180) + std::sin(psi) * std::sin(25 * M_PI / 180);
+  const double Cpsi = 0.047 * psi * 180 / M_PI - 2.115;
+  EXPECT_NEAR(r.bow_term_N, 845 * Cmu * hh * hh * (32 + Cpsi * HF), 1e-6);
+  EXPECT_NEAR(r.midbody_term_N, 42 * 100 * HF * HF, 1e-6);
+  EXPECT_NEAR(r.form_term_N, 825 * std::pow(199.11 * 11.733 / (32.0 * 32.0), 3) * 900 / 199.11, 1e-6);
+  EXPECT_EQ(r.C1_N + r.C2_N + r.bow_term_N + r.midbody_term_N + r.form_term_N, r.R_CH_N);
+  EXPECT_GT(r.bow_term_N, r.midbody_term_N);
+}
+
 TEST(Fsicr, WorkedValue992kN) {
   const auto r = fsicr_channel_resistance(panamax(30, 45, 80), IceClass::IA);
   EXPECT_NEAR(r.H_F_m, 5.917, 0.0005);

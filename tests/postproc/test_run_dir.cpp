@@ -592,6 +592,17 @@ TEST(RunDir, HullForceSplitIsAveragedLikeTheResistance) {
   EXPECT_NE(md.find("## Where the resistance comes from (hull force split)"), std::string::npos) << md;
   EXPECT_NE(md.find("| bow (x > 4.500 m, ahead of the parallel mid-body) | "), std::string::npos) << md;
   EXPECT_NE(md.find("| tangential (friction) | "), std::string::npos) << md;
+  // FSICR's terms beside the parts: they add up to R_CH; the bow term's row holds the bow part and their ratio
+  const auto& F = j["fsicr"];
+  ASSERT_FALSE(F["R_CH_kN"].is_null()) << F.dump(2);
+  const auto& T = F["terms_kN"];
+  EXPECT_NEAR(T["C1_C2"].get<double>() + T["bow"].get<double>() + T["midbody"].get<double>() +
+                  T["form"].get<double>(), F["R_CH_kN"].get<double>(), 1e-9);
+  const double bow_kN = S["bow"]["mean"].get<double>() * std::pow(j["lambda"].get<double>(), 3) / 1000;
+  EXPECT_NE(md.find(fmt::format("| bow: C3 Cmu (H_F + H_M)^2 (B + Cpsi H_F) | {:.1f} kN | bow {:.1f} ± ",
+                                T["bow"].get<double>(), bow_kN)),
+            std::string::npos) << md;
+  EXPECT_NE(md.find(fmt::format(" | {:.2f} |\n", T["bow"].get<double>() / bow_kN)), std::string::npos) << md;
 }
 
 // A part of the hull that touched no ice in the window says so ("no contact"), never "0.0000 ± 0.0000 N".

@@ -39,6 +39,10 @@ struct FsicrResult {
   double psi_deg = 0, Cmu = 0, Cpsi = 0;
   double LTB3_raw = 0, LTB3_used = 0;  // (L T / B^2)^3 before and after clamping
   double C1_N = 0, C2_N = 0;
+  // R_CH's terms: C1 + C2 + bow + mid-body + form = R_CH_N (the sum in that order, so it is exact)
+  double bow_term_N = 0;      // C3 Cmu (H_F + H_M)^2 (B + Cpsi H_F): the bow pushing the brash
+  double midbody_term_N = 0;  // C4 L_par H_F^2: friction along the parallel mid-body
+  double form_term_N = 0;     // C5 (L T / B^2)^3 A_wf / L: the hull form
   double R_CH_N = 0;
 };
 
