@@ -39,10 +39,10 @@ double fsicr_psi_deg(double alpha_deg, double phi2_deg) {
 }
 
 FsicrResult fsicr_channel_resistance(const FsicrParams& p, IceClass ice_class, const FsicrConstants& k,
-                                     std::optional<double> psi_override_deg) {
+                                     std::optional<double> psi_override_deg, std::optional<double> H_F_m) {
   FsicrResult r;
   r.H_M_m = h_m_for_ice_class(ice_class);
-  r.H_F_m = k.HF_offset_m + std::sqrt(r.H_M_m * p.B_m);
+  r.H_F_m = H_F_m ? *H_F_m : k.HF_offset_m + std::sqrt(r.H_M_m * p.B_m);
   r.psi_deg = psi_override_deg ? *psi_override_deg : fsicr_psi_deg(p.alpha_deg, p.phi2_deg);
   r.Cmu = std::max(k.Cmu_min, 0.15 * std::cos(p.phi2_deg * kDeg) + std::sin(r.psi_deg * kDeg) * std::sin(p.alpha_deg * kDeg));
   r.Cpsi = r.psi_deg <= k.Cpsi_zero_below_psi_deg ? 0.0 : k.Cpsi_slope * r.psi_deg - k.Cpsi_offset;

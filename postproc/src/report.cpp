@@ -388,8 +388,17 @@ std::string split_markdown(const RunAnalysis& a) {
               "\"The hull force split\").\n\n";
 }
 
+// R_CH with the brash thickness in front of the bow that the run measured (full scale) in place of the rule's H_F:
+// what the rule's H_F carries. None without the ice around the hull.
+std::optional<FsicrResult> fsicr_with_measured_hf(const RunAnalysis& a) {
+  if (!a.fsicr.result || !a.ice_around) return std::nullopt;
+  return fsicr_channel_resistance(a.fsicr.params, parse_ice_class(a.fsicr.ice_class), {}, a.case_.psi_override_deg,
+                                  a.ice_around->H_F_measured_m * a.case_.scale_lambda);
+}
+
 // R_CH's terms beside the hull force split's parts, full scale (docs/fsicr_vs_paper.md): the bow term against the
-// bow, the mid-body term against the parallel mid-body; the form term and the stern have no counterpart.
+// bow, the mid-body term against the parallel mid-body; the form term and the stern have no counterpart. With the
+// ice around the hull, a column of the terms with the run's measured H_F.
 std::string fsicr_terms_markdown(const RunAnalysis& a) {
   const auto& r = a.fsicr.result;
   if (!r) return {};
@@ -404,16 +413,27 @@ std::string fsicr_terms_markdown(const RunAnalysis& a) {
     if (!split || !a.split_contact[k] || a.resistance_split[k].mean <= 0) return std::string("n/a");
     return fmt::format("{:.2f}", term_N / 1000.0 / (a.resistance_split[k].mean * to_kN));
   };
-  std::string md = "| FSICR term | R_CH's part | this run's part | term / part |\n|---|---|---|---|\n";
-  md += fmt::format("| bow: C3 Cmu (H_F + H_M)^2 (B + Cpsi H_F) | {:.1f} kN | bow {} | {} |\n", r->bow_term_N / 1000,
-                    part(0), ratio(r->bow_term_N, 0));
-  md += fmt::format("| parallel mid-body: C4 L_par H_F^2 | {:.1f} kN | mid-body {} | {} |\n",
-                    r->midbody_term_N / 1000, part(1), ratio(r->midbody_term_N, 1));
-  md += fmt::format("| hull form: C5 (L T / B^2)^3 A_wf / L | {:.1f} kN | (no region: stern {}) | n/a |\n",
-                    r->form_term_N / 1000, part(2));
+  const auto m = fsicr_with_measured_hf(a);
+  const auto with_hf = [&](double FsicrResult::*term) {
+    return m ? fmt::format(" {:.1f} kN |", (*m).*term / 1000) : std::string();
+  };
+  std::string md = "| FSICR term | R_CH's part | this run's part | term / part |";
+  md += m ? fmt::format(" the term with this run's H_F = {:.2f} m |\n|---|---|---|---|---|\n", m->H_F_m)
+          : std::string("\n|---|---|---|---|\n");
+  md += fmt::format("| bow: C3 Cmu (H_F + H_M)^2 (B + Cpsi H_F) | {:.1f} kN | bow {} | {} |{}\n", r->bow_term_N / 1000,
+                    part(0), ratio(r->bow_term_N, 0), with_hf(&FsicrResult::bow_term_N));
+  md += fmt::format("| parallel mid-body: C4 L_par H_F^2 | {:.1f} kN | mid-body {} | {} |{}\n",
+                    r->midbody_term_N / 1000, part(1), ratio(r->midbody_term_N, 1),
+                    with_hf(&FsicrResult::midbody_term_N));
+  md += fmt::format("| hull form: C5 (L T / B^2)^3 A_wf / L | {:.1f} kN | (no region: stern {}) | n/a |{}\n",
+                    r->form_term_N / 1000, part(2), with_hf(&FsicrResult::form_term_N));
   if (r->C1_N + r->C2_N != 0)
-    md += fmt::format("| C1 + C2 (IA Super: the consolidated layer) | {:.1f} kN | (none) | n/a |\n",
-                      (r->C1_N + r->C2_N) / 1000);
+    md += fmt::format("| C1 + C2 (IA Super: the consolidated layer) | {:.1f} kN | (none) | n/a |{}\n",
+                      (r->C1_N + r->C2_N) / 1000, m ? fmt::format(" {:.1f} kN |", (m->C1_N + m->C2_N) / 1000) : "");
+  if (m)
+    md += fmt::format("| R_CH | {:.1f} kN | resistance {:.1f} ± {:.1f} kN | {:.2f} | {:.1f} kN |\n", r->R_CH_N / 1000,
+                      a.resistance_full_kN, a.resistance_full_ci95_kN,
+                      a.resistance_full_kN > 0 ? r->R_CH_N / 1000 / a.resistance_full_kN : 0.0, m->R_CH_N / 1000);
   return md + "\n";
 }
 
@@ -516,6 +536,14 @@ nlohmann::ordered_json report_json(const RunAnalysis& a) {
                              {"LTB2_cubed_used", r->LTB3_used}, {"C1_N", r->C1_N}, {"C2_N", r->C2_N}};
     fsicr["terms_kN"] = {{"C1_C2", (r->C1_N + r->C2_N) / 1000.0}, {"bow", r->bow_term_N / 1000.0},
                          {"midbody", r->midbody_term_N / 1000.0}, {"form", r->form_term_N / 1000.0}};
+    if (const auto m = fsicr_with_measured_hf(a))
+      fsicr["with_measured_H_F"] = {{"H_F_m", m->H_F_m},
+                                    {"R_CH_kN", m->R_CH_N / 1000.0},
+                                    {"terms_kN",
+                                     {{"C1_C2", (m->C1_N + m->C2_N) / 1000.0},
+                                      {"bow", m->bow_term_N / 1000.0},
+                                      {"midbody", m->midbody_term_N / 1000.0},
+                                      {"form", m->form_term_N / 1000.0}}}};
   } else {
     fsicr["R_CH_kN"] = nullptr;
   }

@@ -54,6 +54,20 @@ TEST(Fsicr, TermsAddUpToRch) {
   EXPECT_GT(r.bow_term_N, r.midbody_term_N);
 }
 
+// A measured H_F in place of the rule's: every term that holds H_F follows it (the form term does not).
+TEST(Fsicr, MeasuredHfReplacesTheRulesInEveryTerm) {
+  const auto p = panamax(25, 60, 100);
+  const auto rule = fsicr_channel_resistance(p, IceClass::IA);
+  const auto m = fsicr_channel_resistance(p, IceClass::IA, {}, std::nullopt, 1.3);
+  EXPECT_EQ(m.H_F_m, 1.3);
+  EXPECT_NEAR(m.bow_term_N, rule.bow_term_N * (2.3 * 2.3 * (32 + rule.Cpsi * 1.3)) /
+                                ((rule.H_F_m + 1) * (rule.H_F_m + 1) * (32 + rule.Cpsi * rule.H_F_m)),
+              1e-6);
+  EXPECT_NEAR(m.midbody_term_N, 42 * 100 * 1.3 * 1.3, 1e-9);
+  EXPECT_EQ(m.form_term_N, rule.form_term_N);
+  EXPECT_EQ(m.bow_term_N + m.midbody_term_N + m.form_term_N, m.R_CH_N);
+}
+
 TEST(Fsicr, WorkedValue992kN) {
   const auto r = fsicr_channel_resistance(panamax(30, 45, 80), IceClass::IA);
   EXPECT_NEAR(r.H_F_m, 5.917, 0.0005);

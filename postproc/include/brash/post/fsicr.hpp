@@ -50,10 +50,12 @@ struct FsicrResult {
 double fsicr_psi_deg(double alpha_deg, double phi2_deg);
 
 // R_CH and its intermediates. p.psi_deg is ignored: psi is recomputed from alpha and phi2 unless
-// psi_override_deg is given (a case's fsicr.psi_deg).
+// psi_override_deg is given (a case's fsicr.psi_deg). H_F_m: the brash thickness in front of the bow in place of
+// the rule's 0.26 + (B H_M)^0.5 (a simulation's measured one, to see what the rule's H_F carries); none: the rule's.
 FsicrResult fsicr_channel_resistance(const FsicrParams& p, IceClass ice_class,
                                      const FsicrConstants& k = {},
-                                     std::optional<double> psi_override_deg = std::nullopt);
+                                     std::optional<double> psi_override_deg = std::nullopt,
+                                     std::optional<double> H_F_m = std::nullopt);
 
 // Values no hull has, one text per problem naming the parameter(s) through `name` (an FsicrParams field such as
 // "B_m" -> how the caller calls it, e.g. "--B"; default: the field name) and the value: non-finite values, lengths
