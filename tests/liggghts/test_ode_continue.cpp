@@ -154,6 +154,20 @@ TEST_F(OdeContinue, InterruptedRunResumesToTheUninterruptedOne) {
   EXPECT_EQ(brash::test::read_text(b / "hull_force.csv"), brash::test::read_text(a / "hull_force.csv"));
   EXPECT_EQ(brash::test::read_text(b / "particles" / "particles_600.csv"),
             brash::test::read_text(a / "particles" / "particles_600.csv"));
+
+  // the resume builds the scene from the snapshot again: one that is gone is named
+  const fs::path copy = kRoot / "gone" / "particles_2000.csv", g = kRoot / "G";
+  fs::create_directories(copy.parent_path());
+  fs::copy_file(liggghts_snapshot(), copy);
+  ASSERT_EQ(run(ode_cmd(g, copy, " --crash-after-step 500")), 137);
+  fs::remove(copy);
+  EXPECT_EQ(run(fmt::format("env BRASH_HULL_DIR='{}' '{}/brash-ode' --resume '{}' --no-progress --no-post > /dev/null "
+                            "2> '{}.stderr'",
+                            BRASH_HULL_DIR, BRASH_BIN_DIR, g.string(), g.string())),
+            2);
+  EXPECT_NE(stderr_of(g).find("the run started from the snapshot " + copy.string() + " (\"scene_from\"), which is gone"),
+            std::string::npos)
+      << stderr_of(g);
 }
 
 // A moving window's snapshot: the piece removed (state 2) is left out, the one held out (state 1) kept; the log
@@ -184,6 +198,33 @@ TEST_F(OdeContinue, RemovedPiecesAreLeftOut) {
   for (const auto& row : first.rows) EXPECT_NE(long(row[0]), long(lig.rows[0][0]));
 }
 
+// A snapshot with angular velocities (omegax,omegay,omegaz) starts the pieces spinning: the log says so, and 0.01 s
+// later the pieces are elsewhere than in the same run from the snapshot without them.
+TEST_F(OdeContinue, AngularVelocitiesOfTheSnapshotAreTaken) {
+  const fs::path plain = kRoot / "spin" / "plain" / "particles_2000.csv", spin = kRoot / "spin" / "particles_2000.csv";
+  fs::create_directories(plain.parent_path());
+  fs::copy_file(liggghts_snapshot(), plain);
+  {
+    std::ifstream in(liggghts_snapshot());
+    std::ofstream out(spin);
+    std::string line;
+    std::getline(in, line);
+    out << line << ",omegax,omegay,omegaz\n";
+    while (std::getline(in, line)) out << line << ",0,30,0\n";  // rolling along x at 30 rad/s
+  }
+  const fs::path p = kRoot / "P", s = kRoot / "S";
+  ASSERT_EQ(run(ode_cmd(p, plain, "", "0.2", "0.21")), 0) << stderr_of(p);
+  ASSERT_EQ(run(ode_cmd(s, spin, "", "0.2", "0.21")), 0) << stderr_of(s);
+  EXPECT_NE(brash::test::read_text(s / "log.txt").find("the snapshot's velocities, the snapshot's angular velocities"),
+            std::string::npos)
+      << brash::test::read_text(s / "log.txt");
+  const Table a = read_csv(p / "particles" / "particles_420.csv"), b = read_csv(s / "particles" / "particles_420.csv");
+  ASSERT_EQ(a.rows.size(), b.rows.size());
+  double dx = 0;
+  for (std::size_t i = 0; i < a.rows.size(); ++i) dx = std::max(dx, std::abs(a.rows[i][1] - b.rows[i][1]));
+  EXPECT_GT(dx, 1e-4);  // m: friction on the spinning pieces moves them
+}
+
 TEST_F(OdeContinue, BadInputsAreRefusedByName) {
   const fs::path snapshot = liggghts_snapshot(), e = kRoot / "E";
   // the run must reach past the snapshot's time
@@ -195,6 +236,11 @@ TEST_F(OdeContinue, BadInputsAreRefusedByName) {
   EXPECT_NE(stderr_of(e).find("--scene-time 0.1 s: " + snapshot.string() + " is the snapshot at t = 0.2 s"),
             std::string::npos)
       << stderr_of(e);
+  // a snapshot needs its time
+  EXPECT_NE(run(fmt::format("'{}/brash-ode' '{}' --scene-from '{}' --no-post > /dev/null 2> '{}.stderr'", BRASH_BIN_DIR,
+                            kCase.string(), snapshot.string(), e.string())),
+            0);
+  EXPECT_NE(stderr_of(e).find("--scene-from requires --scene-time"), std::string::npos) << stderr_of(e);
   // no such file
   EXPECT_NE(run(ode_cmd(e, kRoot / "nothing.csv")), 0);
   EXPECT_NE(stderr_of(e).find((kRoot / "nothing.csv").string()), std::string::npos) << stderr_of(e);

@@ -263,6 +263,10 @@ void take_scene_from(run::DriverOptions& d, RunOptions& o) {
     if (meta.is_object() && meta.value("scene_from", std::string()) != "") {
       o.scene_from = meta["scene_from"].get<std::string>();
       o.scene_time_s = meta.value("scene_time_s", 0.0);
+      if (!fs::exists(o.scene_from))
+        throw InputError(fmt::format("{}: the run started from the snapshot {} (\"scene_from\"), which is gone: a "
+                                     "resume builds its scene from it again",
+                                     (d.resume_dir / "meta.json").string(), o.scene_from.string()));
     }
     return;
   }
