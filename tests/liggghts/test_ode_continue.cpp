@@ -170,6 +170,20 @@ TEST_F(OdeContinue, InterruptedRunResumesToTheUninterruptedOne) {
       << stderr_of(g);
 }
 
+// A start off the output grid (rows every 0.03 s: 0.21, 0.24, ...): the first row averages the steps since the start,
+// the same steps as the uninterrupted run's row at 0.21 s (every 0.01 s), not a third of them.
+TEST_F(OdeContinue, FirstRowAveragesTheStepsSinceTheStart) {
+  const fs::path c = kRoot / "C";
+  ASSERT_EQ(run(ode_cmd(c, liggghts_snapshot(), " --set run.output_interval_s=0.03", "0.2", "0.24")), 0) << stderr_of(c);
+  const Table coarse = read_csv(c / "hull_force.csv"), fine = read_csv(kRoot / "A" / "hull_force.csv");
+  ASSERT_GE(coarse.rows.size(), 2u);
+  EXPECT_NEAR(coarse.rows[0][0], 0.21, 1e-9);
+  EXPECT_NEAR(fine.rows[0][0], 0.21, 1e-9);
+  for (std::size_t col = 1; col < 4; ++col) EXPECT_NEAR(coarse.rows[0][col], fine.rows[0][col], 1e-6 * (1 + std::abs(fine.rows[0][col])));
+  // the next row: a whole interval, 0.21 to 0.24 s, the mean of the fine rows at 0.22, 0.23 and 0.24 s
+  EXPECT_NEAR(coarse.rows[1][1], (fine.rows[1][1] + fine.rows[2][1] + fine.rows[3][1]) / 3, 1e-6 * (1 + std::abs(coarse.rows[1][1])));
+}
+
 // A moving window's snapshot: the piece removed (state 2) is left out, the one held out (state 1) kept; the log
 // counts them.
 TEST_F(OdeContinue, RemovedPiecesAreLeftOut) {

@@ -550,11 +550,13 @@ bool Stepping::step(long k, run::Attempt& a) {
   const double t = double(k) * dt_;
   if (t >= c_.run.window_s[0] - 1e-12 && t <= c_.run.window_s[1] + 1e-12) win_sum_ += f.x(), ++win_n_;
   if (k % n_out_ == 0) {
-    const Vec3 m = acc_ / double(n_out_);
+    // the steps of this row: an output interval, or fewer in a run from a scene off the output grid
+    const double n = double(std::min(n_out_, k - s_.first_step));
+    const Vec3 m = acc_ / n;
     // the row as written (the early stop reads what a replay of hull_force.csv reads)
     record_.rows.push_back({t, run::as_recorded(m.x()), run::as_recorded(m.y()), run::as_recorded(m.z())});
     if (!record_.extra_columns.empty())  // the split's columns (advance: a record has all of them or none)
-      for (const double v : acc_split_) record_.extra.push_back(run::as_recorded(v / double(n_out_)));
+      for (const double v : acc_split_) record_.extra.push_back(run::as_recorded(v / n));
     acc_.setZero();
     acc_split_.fill(0);
   }
