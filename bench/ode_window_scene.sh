@@ -2,7 +2,8 @@
 # brash-ode's seconds per step on the paper case's scene during its window: the pieces of the LIGGGHTS paper run
 # (`both`, the case's defaults; docs/performance.md "The paper case on 2 cores" has its command) as its particle
 # dumps hold them at T = 15 s (the window's start) and 25 s (its early stop), positions and velocities, with the hull
-# where it was then (bench-ode --scene-from). Each setting runs STEPS steps of dt 1e-3 s on one core, one after the
+# where it was then (bench-ode --scene-from; the pieces held out ahead by the moving window at their packing position,
+# at rest). Each setting runs STEPS steps of dt 1e-3 s on one core, one after the
 # other in one sitting:
 #   all        every piece integrated
 #   farfield   the case's far field window (speedups.farfield: true): idle beyond 0.3 m ahead of the bow and 1.0 m
@@ -45,8 +46,8 @@ farfield+=" --set speedups.farfield_every_steps=$every"
 declare -A opts=([all]=""
                  [farfield]="$farfield"
                  [beside]="$farfield --set speedups.farfield_beside_m=$side_m")
-duration="$(/usr/bin/python3 -c "print($steps * $dt)")"
 for t in 15 25; do
+  duration="$(/usr/bin/python3 -c "print($t + $steps * $dt)")"  # the model time to reach, STEPS steps after T
   file="$(dump_at "$t")"
   [ -n "$file" ] || { echo "ode_window_scene: no dump at t = $t s in $run/particles/index.csv"; exit 1; }
   declare -A per_step=()

@@ -1,5 +1,6 @@
 // bench-ode: particle-steps/s and wall time per simulated second of brash-ode on a case (not a test).
 //   bench-ode CASE_DIR [--duration 0.5] [--scene-from DUMP.csv --scene-time T] [brash-ode options]
+// (with --scene-from the run goes from T to --duration, as brash-ode's)
 // Also runs a synthetic floating lattice bed without hull (--bed N for N x N lower-layer spheres), with the
 // ode: keys given on the command line.
 #include <fmt/format.h>
@@ -27,13 +28,6 @@ int main(int argc, char** argv) {
   app.remove_option(cli.resume);  // a bench run is not resumed
   app.add_option("--bed", bed, "synthetic bed: N x N spheres per layer, two layers, no hull (0 = off)");
   app.add_option("--bed-duration", bed_s, "simulated time of the synthetic bed [s]")->capture_default_str();
-  app.add_option("--scene-from", o.scene_from,
-                 "start from another run's particle dump (particles/*.csv: id,x,y,z,radius[,vx,vy,vz]) instead of "
-                 "the packing, to time a run's late scene")
-      ->check(CLI::ExistingFile);
-  app.add_option("--scene-time", o.scene_time_s,
-                 "with --scene-from: the dump's model time [s]; the hull starts where it was then")
-      ->check(CLI::NonNegativeNumber);
   app.add_flag_callback("--progress", [&o, &d] { o.progress = d.progress = true; },
                         "progress lines on stderr, as brash-ode writes them (off by default here)");
   CLI11_PARSE(app, argc, argv);
@@ -61,6 +55,7 @@ int main(int argc, char** argv) {
                  s.wall_collide_s, s.wall_step_s, s.contacts_last);
     }
     if (!d.case_path.empty()) {
+      brash::ode::take_scene_from(d, o);
       if (d.out_dir.empty()) d.out_dir = std::filesystem::temp_directory_path() / fmt::format("bench-ode-{}", ::getpid());
       brash::ode::take_restart_every(d, o);
       brash::ode::OdeEngine engine(o);

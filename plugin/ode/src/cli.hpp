@@ -1,6 +1,6 @@
 // The command line of brash-ode and bench-ode: the run driver's options (brash/run/driver_cli.hpp: CASE_DIR or
-// --resume RUN_DIR, --out, --duration, --model, --treatment, --set KEY=VALUE, --restart-every, ...), short forms of
-// the case's ode: keys (--dt S is --set ode.timestep_s=S: a change of the case, which the run directory's case.yaml
+// --resume RUN_DIR, --out, --duration, --model, --treatment, --set KEY=VALUE, --restart-every, ...), another run's
+// snapshot as the start (--scene-from, --scene-time), short forms of the case's ode: keys (--dt S is --set ode.timestep_s=S: a change of the case, which the run directory's case.yaml
 // records), and what a run takes besides its case (RunOptions).
 #pragma once
 #include <CLI/CLI.hpp>
@@ -45,6 +45,20 @@ inline run::DriverCli add_ode_options(CLI::App& app, run::DriverOptions& d, RunO
            k.option, [&d, key = k.key](const std::string& v) { d.overrides.sets.emplace_back(key, v); },
            fmt::format("{} (--set {}=VALUE; default: the case's)", k.help, k.key))
         ->type_name("VALUE");
+  CLI::Option* scene_from = app.add_option("--scene-from", o.scene_from,
+                 "start from another run's particle snapshot of this case (RUN_DIR/particles/particles_<step>.csv: "
+                 "id,x,y,z,radius[,vx,vy,vz][,omegax,omegay,omegaz][,state]) instead of the packing; the run goes on "
+                 "from --scene-time to --duration")
+      ->check(CLI::ExistingFile)
+      ->excludes(cli.resume);
+  CLI::Option* scene_time =
+      app.add_option("--scene-time", o.scene_time_s,
+                     "with --scene-from: the snapshot's model time [s]; the hull starts where it was then, the "
+                     "record's times from there")
+          ->check(CLI::NonNegativeNumber)
+          ->excludes(cli.resume)
+          ->needs(scene_from);
+  scene_from->needs(scene_time);
   app.add_flag_callback("--no-progress", [&o, &d] { o.progress = d.progress = false; }, "no progress line on stderr");
   // Testing only: exit like a kill -9 (no cleanup, no final outputs) right after this step.
   app.add_option("--crash-after-step", o.crash_after_step)->group("");

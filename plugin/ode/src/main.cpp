@@ -1,5 +1,7 @@
 // brash-ode: the standalone ODE simulator.
 //   brash-ode CASE_DIR [--out RUN_DIR] [--duration S] [--set KEY=VALUE] [--dt S] [...]   run a case (run driver)
+//   brash-ode CASE_DIR --scene-from RUN/particles/particles_<n>.csv --scene-time T [--duration D]
+//                                               go on from another run's snapshot at T to D (a run like any other)
 //   brash-ode --resume RUN_DIR                  continue a killed or stopped run from its restart files and case.yaml
 //   brash-ode --single rise|float|heave|all [--dt S] [--implicit M] [--treatment T]   single-sphere scenes vs the
 //                                                                                      reference integrator
@@ -51,6 +53,7 @@ int main(int argc, char** argv) {
     if (!d.resume_dir.empty() && d.overrides.sets.empty() && brash::ode::move_ode_options_into_case(d.resume_dir))
       fmt::print(stderr, "[brash-ode] {}: the settings of \"ode_options\" in meta.json moved into case.yaml\n",
                  d.resume_dir.string());
+    brash::ode::take_scene_from(d, o);
     brash::ode::take_restart_every(d, o);
     brash::ode::OdeEngine engine(o);
     return brash::run::drive(engine, d);

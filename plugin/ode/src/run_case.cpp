@@ -57,8 +57,40 @@ struct OdeEngine::Scene {
   Skips skips;                        // far_field_skips of the case
   ImplicitMode implicit = ImplicitMode::EffectiveMass;
   std::vector<Vec3> velocity_m_s;     // the pieces' starting velocities (--scene-from; empty: at rest)
+  SceneFromDump dump;                 // --scene-from: the ids, angular velocities and counts (its pieces moved out)
+  long first_step = 0;                // the step of the starting scene (--scene-time over the ODE step; 0)
   core::HullRegions hull_regions;     // the hull force split's, measured on the full hull
 };
+
+namespace {
+
+// The piece of the packing that spheres[j] is (1-based): the dump's id, else the packing's order.
+long piece_id(const OdeEngine::Scene& s, std::size_t j) {
+  return s.dump.ids.empty() ? static_cast<long>(j) + 1 : s.dump.ids[j];
+}
+
+// A dump's pieces are the case's: each id one of its packing's pieces, once, with that piece's radius (to the
+// dump's printed digits). InputError naming the file and the id.
+void check_dump_is_of_case(const SceneFromDump& dump, const std::vector<Sphere>& packing, const fs::path& file) {
+  std::vector<bool> seen(packing.size(), false);
+  for (std::size_t j = 0; j < dump.ids.size(); ++j) {
+    const long id = dump.ids[j];
+    if (id < 1 || id > static_cast<long>(packing.size()))
+      throw InputError(fmt::format("--scene-from {}: piece id {} is not one of the case's {} pieces (a snapshot of "
+                                   "another case?)",
+                                   file.string(), id, packing.size()));
+    if (seen[std::size_t(id - 1)])
+      throw InputError(fmt::format("--scene-from {}: piece id {} appears twice", file.string(), id));
+    seen[std::size_t(id - 1)] = true;
+    const double d_case = packing[std::size_t(id - 1)].diameter_m, d_dump = dump.spheres[j].diameter_m;
+    if (std::abs(d_dump - d_case) > 1e-4 * d_case)
+      throw InputError(fmt::format("--scene-from {}: piece {} has radius {} m, the case's packing {} m (a snapshot of "
+                                   "another case?)",
+                                   file.string(), id, 0.5 * d_dump, 0.5 * d_case));
+  }
+}
+
+}  // namespace
 
 OdeEngine::OdeEngine(RunOptions options) : options_(std::move(options)) {}
 OdeEngine::~OdeEngine() = default;
@@ -67,7 +99,16 @@ nlohmann::json OdeEngine::meta() const {
   if (!scene_) return {{"resumes", nlohmann::json::array()}};
   const auto& st = scene_->stepper;
   const Skips& k = scene_->skips;
-  return {
+  nlohmann::json scene;
+  if (!options_.scene_from.empty()) {
+    const SceneFromDump& dump = scene_->dump;
+    scene = {{"particles", scene_->spheres.size()},
+             {"scene_from", options_.scene_from.string()},
+             {"scene_time_s", options_.scene_time_s},
+             {"scene_pieces", {{"in_scene", dump.in_scene}, {"held_out", dump.held_out}, {"removed", dump.removed}}}};
+    if (options_.requested_window_s) scene["requested_window_s"] = *options_.requested_window_s;
+  }
+  nlohmann::json meta = {
       {"engine_version", fmt::format("brash-ode 0.1 + ODE {} (Debian libode, double, dWorldQuickStep)", "0.16.2")},
       {"implicit_realisation", to_string(scene_->c.ode.implicit)},
       {"dt_s", st.dt_s},
@@ -91,6 +132,8 @@ nlohmann::json OdeEngine::meta() const {
                  {"cull_front_speed_m_s", k.front_speed_m_s}}},
       {"hull_split", run::hull_split_meta(scene_->hull_regions)},
       {"resumes", nlohmann::json::array()}};
+  if (scene.is_object()) meta.update(scene);
+  return meta;
 }
 
 OdeEngine::WakeRefusal OdeEngine::wake_refusal(WakeBy by) const {
@@ -107,11 +150,19 @@ void OdeEngine::load(const Case& case_in, const fs::path& case_file, const std::
   Case c = case_in;
   std::vector<Sphere> spheres = packing;
   const bool from_dump = !options_.scene_from.empty();
-  if (from_dump) {  // another run's scene, with the hull where it was then
-    SceneFromDump dump = read_scene_dump(options_.scene_from);
-    spheres = std::move(dump.spheres);
-    s.velocity_m_s = std::move(dump.velocity_m_s);
-    c.hull.start_x_m += c.ship.speed_m_s * options_.scene_time_s;
+  if (from_dump) {  // another run's scene at scene_time_s: the run goes on from there (build_world places the hull)
+    s.dump = read_scene_dump(options_.scene_from);
+    check_dump_is_of_case(s.dump, packing, options_.scene_from);
+    spheres = std::move(s.dump.spheres);
+    s.velocity_m_s = std::move(s.dump.velocity_m_s);
+    if (c.ode.settle_s > 0)
+      throw InputError(fmt::format("ode.settle_s {} s settles the packing before t = 0, and --scene-from starts from "
+                                   "a scene in motion: --set ode.settle_s=0",
+                                   c.ode.settle_s));
+    s.first_step = std::lround(options_.scene_time_s / c.ode.timestep_s);
+    if (std::abs(double(s.first_step) * c.ode.timestep_s - options_.scene_time_s) > 1e-9 * std::max(1.0, options_.scene_time_s))
+      throw InputError(fmt::format("--scene-time {} s is not a whole number of ODE steps (ode.timestep_s {} s)",
+                                   options_.scene_time_s, c.ode.timestep_s));
   }
   const bool soft_bed = c.ice.settle || from_dump;
   const fs::path bed_file = from_dump ? options_.scene_from : c.ice.settle ? settled_packing_file(c) : c.ice.packing_file;
@@ -189,6 +240,7 @@ class Stepping {
 
  private:
   void log(const std::string& line);
+  double hull_start_x_m() const { return c_.hull.start_x_m + c_.ship.speed_m_s * double(s_.first_step) * dt_; }
   void build_world();
   void log_scene();
   void start_moving(bool resume);
@@ -242,9 +294,12 @@ void Stepping::build_world() {
     order_.resize(centres.size());
     std::iota(order_.begin(), order_.end(), std::size_t{0});
   }
-  for (const std::size_t j : order_)
-    w_->add_sphere(centres[j], 0.5 * s_.spheres[j].diameter_m, c_.ice.density_kg_m3,
-                   s_.velocity_m_s.empty() ? Vec3::Zero() : s_.velocity_m_s[j]);
+  const auto& omega = s_.dump.angular_velocity_rad_s;
+  for (const std::size_t j : order_) {
+    const std::size_t i = w_->add_sphere(centres[j], 0.5 * s_.spheres[j].diameter_m, c_.ice.density_kg_m3,
+                                         s_.velocity_m_s.empty() ? Vec3::Zero() : s_.velocity_m_s[j]);
+    if (!omega.empty()) w_->set_angular_velocity(i, omega[j]);
+  }
   std::vector<double> verts;
   std::vector<dTriIndex> tris;
   double hx0 = 1e300, hx1 = -1e300, hz0 = 1e300;
@@ -263,7 +318,8 @@ void Stepping::build_world() {
     w_->add_wall_box(Vec3(-0.025, 0, -0.25), Vec3(0.05, c_.channel.width_m, 1.5));
     w_->add_wall_box(Vec3(c_.channel.length_m + 0.025, 0, -0.25), Vec3(0.05, c_.channel.width_m, 1.5));
   }
-  w_->set_hull(std::move(verts), std::move(tris), Vec3(c_.hull.start_x_m, 0, 0), Vec3::Zero());
+  // the hull where it is at the first step (--scene-from: where it was then in the other run)
+  w_->set_hull(std::move(verts), std::move(tris), Vec3(hull_start_x_m(), 0, 0), Vec3::Zero());
   w_->set_hull_regions(s_.hull_regions);
 }
 
@@ -292,10 +348,18 @@ void Stepping::log_scene() {
                                       k.cull_ahead_m, wake.front_speed_m_s, wake.force_N)
                         : fmt::format("woken by a horizontal force above {:.4g} N", wake.force_N)));
   }
-  if (!o_.scene_from.empty())
-    log(fmt::format("scene from {} at t = {} s of its run: {} pieces, hull at x = {:.4g} m (pieces numbered in the "
-                    "file's order)",
-                    o_.scene_from.string(), o_.scene_time_s, s_.spheres.size(), c_.hull.start_x_m));
+  if (!o_.scene_from.empty()) {
+    const SceneFromDump& d = s_.dump;
+    log(fmt::format("scene from {} at t = {} s of its run: {} pieces, hull at x = {:.4g} m; {}",
+                    o_.scene_from.string(), o_.scene_time_s, s_.spheres.size(), hull_start_x_m(),
+                    d.has_state ? fmt::format("{} in its scene (state 0), {} held out at their packing position at "
+                                              "rest (state 1), {} removed (state 2) left out",
+                                              d.in_scene, d.held_out, d.removed)
+                                : std::string("every piece (no state column)")));
+    log(fmt::format("scene: {}{}", d.has_velocity ? "the snapshot's velocities" : "no velocities in the snapshot: at rest",
+                    d.has_angular_velocity ? ", the snapshot's angular velocities"
+                                           : ", no angular velocities in the snapshot: the pieces start without spin"));
+  }
   if (s_.surface_layer_from_bed)
     log(fmt::format("{}: contact surface layer {:.3g} m ({:.2f} % d), its largest overlap, so that the "
                     "bed lies as it was left",
@@ -420,13 +484,13 @@ void Stepping::dump(long step) {
     const Vec3 x = w.position(i), v = w.velocity(i);
     if (!x.allFinite() || !v.allFinite())
       throw std::runtime_error(fmt::format("sphere {} has a non-finite position/velocity at t = {} s (step {})",
-                                           order_[i] + 1, double(step) * dt_, step));
+                                           piece_id(s_, order_[i]), double(step) * dt_, step));
     const auto im = core::immersion(w.radius(i), x.z(), c_.water.level_m);
     // idle far-field ice (--cull) and retired pieces: active 0, no Ca (no fluid force acts on them)
     const bool active = !w.culled(i) && !w.retired(i);
     const Vec3 ca = active ? w.fluid_output(i).ca : Vec3::Zero();
     s += fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g},{:.6g},{:.6g},{:.6g},{:.6g},{:.4g},{:.4g},{:.4g},{}\n",
-                     order_[i] + 1, x.x(), x.y(), x.z(), w.radius(i), v.x(), v.y(), v.z(), im.fraction, ca.x(),
+                     piece_id(s_, order_[i]), x.x(), x.y(), x.z(), w.radius(i), v.x(), v.y(), v.z(), im.fraction, ca.x(),
                      ca.y(), ca.z(), active ? 1 : 0);
   }
   const std::string name = fmt::format("particles_{}.csv", step);
@@ -449,7 +513,7 @@ void Stepping::check_guards(long step) {
   const guard::HullNow hull_now{s_.hull_query.get(), w.hull_position() - Vec3(0, 0, c_.hull.draft_m)};
   const double exit_lo_m = (*s_.limits.box)[0], exit_hi_m = (*s_.limits.box)[1];
   std::size_t exits_now = 0;
-  std::optional<std::pair<std::size_t, std::string>> stop;  // the lowest piece id with a guard stop, its cause
+  std::optional<std::pair<long, std::string>> stop;  // the lowest piece id with a guard stop, its cause
   for (std::size_t i = 0; i < w.size(); ++i) {
     if (w.retired(i)) continue;
     guard::Piece p;
@@ -464,9 +528,9 @@ void Stepping::check_guards(long step) {
     p.radius_m = w.radius(i);
     p.mass_kg = w.mass(i);
     if (const auto cause = guard::check_piece(p, s_.limits, s_.hull_query ? &hull_now : nullptr))
-      if (!stop || order_[i] < stop->first) stop.emplace(order_[i], *cause);
+      if (const long id = piece_id(s_, order_[i]); !stop || id < stop->first) stop.emplace(id, *cause);
   }
-  if (stop) throw GuardStop(guard::stop_message(step, double(step) * dt_, static_cast<long>(stop->first) + 1, stop->second));
+  if (stop) throw GuardStop(guard::stop_message(step, double(step) * dt_, stop->first, stop->second));
   if (exits_now)
     log(fmt::format("step {} (t = {:.4f} s): {} piece(s) left the scene through the channel's ends (x < {:.6g} or x > "
                     "{:.6g} m); {} in all",
@@ -486,11 +550,13 @@ bool Stepping::step(long k, run::Attempt& a) {
   const double t = double(k) * dt_;
   if (t >= c_.run.window_s[0] - 1e-12 && t <= c_.run.window_s[1] + 1e-12) win_sum_ += f.x(), ++win_n_;
   if (k % n_out_ == 0) {
-    const Vec3 m = acc_ / double(n_out_);
+    // the steps of this row: an output interval, or fewer in a run from a scene off the output grid
+    const double n = double(std::min(n_out_, k - s_.first_step));
+    const Vec3 m = acc_ / n;
     // the row as written (the early stop reads what a replay of hull_force.csv reads)
     record_.rows.push_back({t, run::as_recorded(m.x()), run::as_recorded(m.y()), run::as_recorded(m.z())});
     if (!record_.extra_columns.empty())  // the split's columns (advance: a record has all of them or none)
-      for (const double v : acc_split_) record_.extra.push_back(run::as_recorded(v / double(n_out_)));
+      for (const double v : acc_split_) record_.extra.push_back(run::as_recorded(v / n));
     acc_.setZero();
     acc_split_.fill(0);
   }
@@ -529,7 +595,7 @@ void Stepping::loop(run::Attempt& a) {
   n_out_ = std::max(1L, std::lround(c_.run.output_interval_s / dt_));
   n_dump_ = std::max(1L, std::lround(c_.run.dump_interval_s / dt_));
   n_restart_ = o_.restart_every_s > 0 ? std::max(1L, std::lround(o_.restart_every_s / dt_)) : 0;
-  n_check_ = std::max(1L, steps_ / 200);  // the driver's check points: every 1/200 of the run, as LIGGGHTS' thermo
+  n_check_ = std::max(1L, (steps_ - s_.first_step) / 200);  // the driver's check points: every 1/200 of the run, as LIGGGHTS' thermo
   loop0_ = std::chrono::steady_clock::now();
   ps_loop0_ = w_->stats().particle_steps;
   a.t_first_s = double(k0_) * dt_;
@@ -546,7 +612,7 @@ void Stepping::conclude(run::Attempt& a, RunSummary& summary) {
   summary.loop_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop0_).count();
   summary.steps = k_end_;
   summary.dt_s = dt_;
-  summary.simulated_s = double(k_end_) * dt_;
+  summary.simulated_s = double(k_end_ - k0_) * dt_;
   summary.stats = st;
   summary.particle_steps = st.particle_steps - ps_loop0_;
   summary.mean_fx_window_N = win_n_ ? win_sum_ / double(win_n_) : NAN;
@@ -555,7 +621,7 @@ void Stepping::conclude(run::Attempt& a, RunSummary& summary) {
   a.meta["loop_time_s"] = summary.loop_time_s;
   // rates of this attempt's loop (a resumed run: the steps since its restart point)
   a.meta["particle_steps_per_s"] = double(summary.particle_steps) / summary.loop_time_s;
-  a.meta["wall_s_per_simulated_s"] = summary.loop_time_s / (summary.simulated_s - double(k0_) * dt_);
+  a.meta["wall_s_per_simulated_s"] = summary.loop_time_s / summary.simulated_s;
   a.meta["phase_wall_s"] = {{"fluid", st.wall_fluid_s - stats0_.wall_fluid_s},
                             {"collide", st.wall_collide_s - stats0_.wall_collide_s},
                             {"quickstep", st.wall_step_s - stats0_.wall_step_s}};
@@ -580,7 +646,7 @@ run::Attempt Stepping::run(bool resume, RunSummary& summary) {
     start_moving(resume);
     if (resume) restore(a);
     a.started = true;
-    if (!resume) check_guards(0), dump(0);
+    if (!resume) k0_ = s_.first_step, check_guards(k0_), dump(k0_);
     loop(a);
     conclude(a, summary);
   } catch (const std::exception& e) {

@@ -1,11 +1,12 @@
 // brash-ode's settings from the case (run_case.hpp): the stepper, the implicit realisation and the far field; a
-// particle dump as the starting scene (bench-ode --scene-from); run directories from before the ode: case keys.
+// particle dump as the starting scene (--scene-from); run directories from before the ode: case keys.
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <unordered_map>
 
@@ -13,6 +14,7 @@
 #include "brash/case_derive.hpp"
 #include "brash/core/far_field.hpp"
 #include "brash/error.hpp"
+#include "brash/run/driver.hpp"
 #include "brash/run/run_layout.hpp"
 #include "ode_internal.hpp"
 
@@ -26,9 +28,11 @@ std::string read_text(const fs::path& p) {
   return ss.str();
 }
 
-// A particle dump (particles/*.csv of any engine's run: a header naming id,x,y,z,radius and optionally vx,vy,vz):
-// the pieces in the file's order with their velocities (zero without the columns); of a moving window's snapshot
-// (a state column) the pieces in its scene, state 0. InputError naming file, line and column.
+// A particle dump (particles/*.csv of any engine's run: a header naming id,x,y,z,radius and optionally vx,vy,vz and
+// omegax,omegay,omegaz): the pieces in the file's order with their velocities (zero without the columns). Of a
+// moving window's snapshot (a state column) the pieces in its scene (state 0) and those held out ahead at their
+// packing position (state 1, at rest); the removed ones (state 2) are left out. InputError naming file, line and
+// column.
 SceneFromDump read_scene_dump(const fs::path& file) {
   std::ifstream in(file);
   if (!in) throw InputError(fmt::format("--scene-from {}: cannot be read", file.string()));
@@ -47,8 +51,13 @@ SceneFromDump read_scene_dump(const fs::path& file) {
     if (!col.count(need))
       throw InputError(fmt::format("{}:{}: no column \"{}\" in the header (a particle dump: id,x,y,z,radius,vx,vy,vz)",
                                    file.string(), ln, need));
-  const bool has_v = col.count("vx") && col.count("vy") && col.count("vz");
   SceneFromDump out;
+  out.has_velocity = col.count("vx") && col.count("vy") && col.count("vz");
+  out.has_angular_velocity = col.count("omegax") && col.count("omegay") && col.count("omegaz");
+  out.has_state = col.count("state") > 0;
+  const auto vec = [&](const std::vector<double>& v, bool has, const char* x, const char* y, const char* z) {
+    return has ? Vec3(v[col[x]], v[col[y]], v[col[z]]) : Vec3::Zero();
+  };
   std::vector<double> v;
   while (std::getline(in, line)) {
     ++ln;
@@ -63,12 +72,25 @@ SceneFromDump read_scene_dump(const fs::path& file) {
         throw InputError(fmt::format("{}:{}: \"{}\" is not a finite number", file.string(), ln, cell));
     }
     if (v.size() < col.size()) throw InputError(fmt::format("{}:{}: {} values, the header names {}", file.string(), ln, v.size(), col.size()));
-    if (col.count("state") && v[col["state"]] != 0) continue;  // held out or removed: not in that scene
+    if (out.has_state) {
+      const double state = v[col["state"]];
+      if (state != 0 && state != 1 && state != 2)
+        throw InputError(fmt::format("{}:{}: state {} is not 0 (in the scene), 1 (held out) or 2 (removed)",
+                                     file.string(), ln, state));
+      if (state == 2) {
+        ++out.removed;
+        continue;
+      }
+      ++(state == 0 ? out.in_scene : out.held_out);
+    }
     const double r = v[col["radius"]];
     if (!(r > 0)) throw InputError(fmt::format("{}:{}: radius {} is not > 0", file.string(), ln, r));
     out.spheres.push_back({v[col["x"]], v[col["y"]], v[col["z"]], 2 * r});
-    out.velocity_m_s.emplace_back(has_v ? v[col["vx"]] : 0.0, has_v ? v[col["vy"]] : 0.0, has_v ? v[col["vz"]] : 0.0);
+    out.ids.push_back(col.count("id") ? std::lround(v[col["id"]]) : long(out.spheres.size()));
+    out.velocity_m_s.push_back(vec(v, out.has_velocity, "vx", "vy", "vz"));
+    out.angular_velocity_rad_s.push_back(vec(v, out.has_angular_velocity, "omegax", "omegay", "omegaz"));
   }
+  if (!out.has_state) out.in_scene = static_cast<long>(out.spheres.size());
   if (out.spheres.empty()) throw InputError(fmt::format("{}: no pieces", file.string()));
   return out;
 }
@@ -213,6 +235,67 @@ CaseOverrides case_keys_of(const nlohmann::json& j, const Case& c, const fs::pat
 }
 
 }  // namespace
+
+namespace {
+
+// The snapshot's own model time where its folder's index.csv (particles/index.csv: step,t_s,file,...) lists it.
+std::optional<double> indexed_time_s(const fs::path& file) {
+  std::ifstream in(file.parent_path() / "index.csv");
+  std::string line;
+  while (std::getline(in, line)) {
+    std::stringstream ss(line);
+    std::string step, t, name;
+    if (std::getline(ss, step, ',') && std::getline(ss, t, ',') && std::getline(ss, name, ',') &&
+        name == file.filename().string()) {
+      char* end = nullptr;
+      const double t_s = std::strtod(t.c_str(), &end);
+      if (end != t.c_str()) return t_s;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+void take_scene_from(run::DriverOptions& d, RunOptions& o) {
+  if (!d.resume_dir.empty()) {  // the scene the run started from
+    const auto meta = nlohmann::json::parse(read_text(d.resume_dir / "meta.json"), nullptr, false);
+    if (meta.is_object() && meta.value("scene_from", std::string()) != "") {
+      o.scene_from = meta["scene_from"].get<std::string>();
+      o.scene_time_s = meta.value("scene_time_s", 0.0);
+      if (!fs::exists(o.scene_from))
+        throw InputError(fmt::format("{}: the run started from the snapshot {} (\"scene_from\"), which is gone: a "
+                                     "resume builds its scene from it again",
+                                     (d.resume_dir / "meta.json").string(), o.scene_from.string()));
+    }
+    return;
+  }
+  if (o.scene_from.empty()) return;
+  o.scene_from = fs::absolute(o.scene_from).lexically_normal();
+  const double t0 = o.scene_time_s;
+  if (const auto t = indexed_time_s(o.scene_from); t && std::abs(*t - t0) > 1e-6)
+    throw InputError(fmt::format("--scene-time {} s: {} is the snapshot at t = {} s ({})", t0, o.scene_from.string(),
+                                 *t, (o.scene_from.parent_path() / "index.csv").string()));
+  const Case c = run::load_run_case(d, "[brash-ode]");
+  const double t1 = c.run.duration_s;
+  if (!(t1 > t0))
+    throw InputError(fmt::format("{} is not after --scene-time {} s: a run from another run's scene goes on from "
+                                 "--scene-time to --duration, the model time to reach",
+                                 d.overrides.duration_s > 0 ? fmt::format("--duration {} s", t1)
+                                                            : fmt::format("the case's run.duration_s {} s", t1),
+                                 t0));
+  const auto [w0, w1] = c.run.window_s;
+  if (w1 <= t0)
+    throw InputError(fmt::format("run.window_s [{}, {}] s ends before --scene-time {} s, where the run starts: set a "
+                                 "window inside the run, e.g. --set run.window_s=[{}, {}]",
+                                 w0, w1, t0, t0, t1));
+  if (w0 < t0) {  // the run covers the window from its start on
+    o.requested_window_s = {w0, w1};
+    d.overrides.sets.emplace_back("run.window_s", fmt::format("[{}, {}]", t0, w1));
+    fmt::print(stderr, "[brash-ode] run.window_s [{}, {}] s begins before --scene-time {} s: the run averages over "
+                       "[{}, {}] s (its case.yaml)\n", w0, w1, t0, t0, w1);
+  }
+}
 
 double restart_every_of_run(const fs::path& run_dir) {
   const auto meta = nlohmann::json::parse(read_text(run_dir / "meta.json"), nullptr, false);

@@ -161,6 +161,8 @@ Vec3 World::velocity(std::size_t i) const {
   const dReal* v = dBodyGetLinearVel(spheres_[i].body);
   return {v[0], v[1], v[2]};
 }
+void World::set_angular_velocity(std::size_t i, const Vec3& w) { dBodySetAngularVel(spheres_[i].body, w.x(), w.y(), w.z()); }
+
 Vec3 World::angular_velocity(std::size_t i) const {
   const dReal* v = dBodyGetAngularVel(spheres_[i].body);
   return {v[0], v[1], v[2]};

@@ -4,13 +4,19 @@
 // `brash-ode --resume RUN_DIR` continues a killed or stopped run as its case.yaml says. The driver writes the rest
 // of the run layout.
 #pragma once
+#include <array>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "brash/ode/bed.hpp"
 #include "brash/ode/world.hpp"
 #include "brash/run/engine.hpp"
+
+namespace brash::run {
+struct DriverOptions;
+}
 
 namespace brash::ode {
 
@@ -19,11 +25,13 @@ namespace brash::ode {
 struct RunOptions {
   double restart_every_s = 0.1;        // simulated time between restart files (0 = none)
   bool progress = true;                // the engine's own lines on stderr (the driver prints progress)
-  // bench-ode --scene-from: the pieces of another run's particle dump (id,x,y,z,radius,vx,vy,vz: any engine's
-  // particles/ file) instead of the packing, and the hull where it was scene_time_s into that run, to time the
-  // ODE step on a run's late scene (pieces numbered in the file's order; not for a resistance; not resumable)
+  // --scene-from: the pieces of another run's particle dump (id,x,y,z,radius[,vx,vy,vz][,omegax,omegay,omegaz]
+  // [,state]: any engine's particles/ file of the same case) instead of the packing, with the hull where it was
+  // scene_time_s into that run: the run goes on from there, its record's times from scene_time_s
+  // (take_scene_from); meta.json keeps both, and a resume reads them back.
   std::filesystem::path scene_from;
   double scene_time_s = 0;
+  std::optional<std::array<double, 2>> requested_window_s;  // the case's window, when it began before scene_time_s
   long stop_after_step = -1;           // testing: raise SIGTERM during this step (a stop request, handled)
   long crash_after_step = -1;          // testing: std::_Exit(137) right after this step (a kill -9: no cleanup)
 };
@@ -49,11 +57,19 @@ bool move_ode_options_into_case(const std::filesystem::path& run_dir);
 // run, which it then reproduces bit for bit.
 double restart_every_of_run(const std::filesystem::path& run_dir);
 
+// A run from another run's particle dump (--scene-from FILE --scene-time T): a new run goes on from T to the
+// case's run.duration_s (--duration), refused unless that is after T; a window that begins before T is clipped to
+// begin at T (the run's case.yaml says so, meta.json keeps the requested one in "window_requested_s"), one that
+// ends before it refused. The snapshot's own time, where its folder's index.csv lists it, must be T. A resume
+// (--resume RUN_DIR) takes the scene its meta.json names ("scene_from", "scene_time_s"). InputError naming the
+// options.
+void take_scene_from(run::DriverOptions& d, RunOptions& o);
+
 // What the last attempt did (bench-ode's numbers).
 struct RunSummary {
   long steps = 0;                      // last step done
   double dt_s = 0;                     // the ODE step (ode.timestep_s)
-  double simulated_s = 0;              // its model time
+  double simulated_s = 0;              // the model time it advanced (from its start or restart point)
   double loop_time_s = 0;              // wall time of the stepping loop
   long particle_steps = 0;             // of the loop
   double mean_fx_window_N = 0;         // mean hull fx over the case window (clipped to the run)

@@ -143,6 +143,8 @@ class World {
   // Returns the sphere index.
   std::size_t add_sphere(const Vec3& position_m, double radius_m, double density_kg_m3,
                          const Vec3& velocity_m_s = Vec3::Zero());
+  // A sphere's angular velocity at the start (a scene taken from another run).
+  void set_angular_velocity(std::size_t i, const Vec3& omega_rad_s);
   // Axis-aligned fixed box (wall).
   void add_wall_box(const Vec3& centre_m, const Vec3& size_m);
   // Kinematic trimesh hull. vertices/triangles are copied (kept alive here); hull frame = body frame.
