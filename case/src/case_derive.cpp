@@ -201,11 +201,16 @@ bool same_packing_inputs(const Case& a, const Case& b) {
   return inputs(a) == inputs(b);
 }
 
-std::vector<std::string> keys_beyond_references(const Case& base, const Case& variant) {
+std::vector<std::string> differing_case_keys(const Case& a, const Case& b) {
   std::set<std::string> changed;
-  differing_keys(YAML::Load(dump_case_yaml(base)), YAML::Load(dump_case_yaml(variant)), "", changed);
+  differing_keys(YAML::Load(dump_case_yaml(a)), YAML::Load(dump_case_yaml(b)), "", changed);
+  return {changed.begin(), changed.end()};
+}
+
+std::vector<std::string> keys_beyond_references(const Case& base, const Case& variant) {
   std::vector<std::string> keys;
-  std::ranges::copy_if(changed, std::back_inserter(keys), [](const std::string& k) { return !keeps_references(k); });
+  std::ranges::copy_if(differing_case_keys(base, variant), std::back_inserter(keys),
+                       [](const std::string& k) { return !keeps_references(k); });
   return keys;
 }
 

@@ -1,5 +1,6 @@
-// brash-post: postprocess a run directory (report, plots, ParaView files), print FSICR R_CH for
-// given parameters, compare runs, replay the early stop or summarize a paired-seed ensemble. Thin CLI over brash_post.
+// brash-post: postprocess a run directory (report, plots, ParaView files), print FSICR R_CH for given parameters,
+// compare runs, replay the early stop, summarize a paired-seed ensemble or a packing ensemble. Thin CLI over
+// brash_post.
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -19,6 +20,7 @@
 #include <brash/post/ensemble.hpp>
 #include <brash/post/fsicr.hpp>
 #include <brash/post/native_dump.hpp>
+#include <brash/post/packing_ensemble.hpp>
 #include <brash/post/particles.hpp>
 #include <brash/post/plots.hpp>
 #include <brash/post/report.hpp>
@@ -289,6 +291,14 @@ int run_paired_ensemble(const EnsembleSpec& spec) {
   return 0;
 }
 
+// The packing-ensemble summary (packing_ensemble.hpp): table on stdout, the JSON beside the runs or in OUT.
+int run_packing_ensemble(const std::vector<fs::path>& run_dirs, const fs::path& out) {
+  const auto s = summarize_packing_ensemble(read_packing_runs(run_dirs), out);
+  brash::run::write_atomic(s.json_path, s.json.dump(1) + "\n");
+  fmt::print("{}wrote {}\n", s.text, s.json_path.string());
+  return 0;
+}
+
 // A run's model-scale resistance from its report.json: (mean, ci95) [N].
 std::pair<double, double> report_resistance(const fs::path& run_dir) {
   const fs::path file = run_dir / "report.json";
@@ -436,6 +446,18 @@ int main(int argc, char** argv) {
   ensemble->add_option("--label-b", espec.b.label, "side B as the table prints it");
   ensemble->add_option("--tol-pct", tol_pct, "tolerance the CI is tested against [%]")->capture_default_str();
 
+  auto* packing = app.add_subcommand(
+      "packing-ensemble",
+      "runs of one case on different packings (ice.seed): the mean resistance with its between-packing 95 % CI "
+      "(Student t, n - 1 dof), beside each run's own CI, model and full scale, as a table and a JSON summary");
+  std::vector<fs::path> packing_runs;
+  fs::path packing_out;
+  packing->add_option("RUN_DIR", packing_runs, "run folders with case.yaml and report.json (2 or more)")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  packing->add_option("--out", packing_out,
+                      "JSON summary (default: the first run's parent folder / packing-ensemble-<case name>.json)");
+
   auto* difference = app.add_subcommand(
       "difference", "two separate runs' resistance: relative difference to the reference with the combined 95 % CI "
                     "(JSON)");
@@ -480,6 +502,7 @@ int main(int argc, char** argv) {
       return run_early_stop(early_runs, early_rel, early_no_trend ? std::vector<std::string>{"none"} : early_trend,
                             early_every);
     if (difference->parsed()) return run_difference(diff_ref, diff_run);
+    if (packing->parsed()) return run_packing_ensemble(packing_runs, packing_out);
     if (sample->parsed()) return run_sample_stats(sample_source);
     if (ensemble->parsed()) {
       espec.tol = tol_pct / 100;

@@ -1,10 +1,12 @@
-// Tests of case variants (brash/case_derive.hpp): derive_case, write_derived_case, case_value.
+// Tests of case variants (brash/case_derive.hpp): derive_case, write_derived_case, case_value,
+// differing_case_keys.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <vector>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -252,4 +254,18 @@ TEST(CaseValue, ResolvedValuesByDottedKey) {
       EXPECT_NE(std::string(e.what()).find(std::string("key '") + key + "'"), std::string::npos) << e.what();
     }
   }
+}
+
+// The keys two resolved cases differ in, sorted, a key set on one side only included (fsicr.alpha_deg: the base
+// sets no fsicr key).
+TEST(DifferingCaseKeys, ListsEachDifferingKeyOnce) {
+  const brash::Case a = brash::load_case(kQuick);
+  EXPECT_TRUE(brash::differing_case_keys(a, a).empty());
+  brash::Case b = a;
+  b.ice.seed = a.ice.seed + 1;
+  b.ship.speed_m_s = 2 * a.ship.speed_m_s;
+  b.name = "jbc_quick_s2";
+  b.fsicr.alpha_deg = 25;
+  EXPECT_EQ(brash::differing_case_keys(a, b),
+            (std::vector<std::string>{"fsicr.alpha_deg", "ice.seed", "name", "ship.speed_m_s"}));
 }

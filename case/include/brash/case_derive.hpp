@@ -54,6 +54,10 @@ Case write_derived_case(const std::filesystem::path& base_case_file, const CaseO
 // True when the two cases' packings are the same bed: every input of brash::packing_request is equal.
 bool same_packing_inputs(const Case& a, const Case& b);
 
+// The dotted keys of the resolved cases (dump_case_yaml: every default filled in, paths absolute) whose values differ
+// between `a` and `b`, a key set on one side only included, in sorted order.
+std::vector<std::string> differing_case_keys(const Case& a, const Case& b);
+
 // Published references (references:) describe one hull, ship speed, ice and fluid: the dotted keys of the resolved
 // case whose value differs between `base` and `variant` and that change what references describe, i.e. every key
 // but those of how the run is computed (docs/case_format.md "references": name, description, run.*, speedups.*,
