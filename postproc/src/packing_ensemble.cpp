@@ -76,6 +76,7 @@ PackingRun read_run(const fs::path& dir, const Case& c) {
   r.case_name = c.name;
   r.seed = c.ice.seed;
   r.window_s = {number_at(j, "/window_s/0", file), number_at(j, "/window_s/1", file)};
+  r.requested_window_s = {c.run.window_s[0], c.run.window_s[1]};
   if (j.value("met_no_ice", false))
     throw InputError(fmt::format("{}: the hull met no ice in the run's window [{}, {}] s: it has no resistance",
                                  file.string(), r.window_s[0], r.window_s[1]));
@@ -90,10 +91,20 @@ PackingRun read_run(const fs::path& dir, const Case& c) {
   return r;
 }
 
+// The run's case as it was asked for: an early stop rewrites the resolved case's duration and window to the stop
+// (meta.json early_stop keeps what was asked), and runs of one ensemble may stop at different times.
 Case read_case(const fs::path& dir) {
   const fs::path file = dir / "case.yaml";
   if (!fs::exists(file)) throw InputError(fmt::format("{}: no case.yaml (not a run folder)", dir.string()));
-  return load_case(file);
+  Case c = load_case(file);
+  const J meta = J::parse(std::ifstream(dir / "meta.json"), nullptr, /*allow_exceptions=*/false);
+  const J::json_pointer duration("/early_stop/requested_duration_s"), window("/early_stop/requested_window_s");
+  if (meta.is_object() && meta.contains(duration) && meta.at(duration).is_number() && meta.contains(window) &&
+      meta.at(window).is_array() && meta.at(window).size() == 2) {
+    c.run.duration_s = meta.at(duration).get<double>();
+    c.run.window_s = {meta.at(window)[0].get<double>(), meta.at(window)[1].get<double>()};
+  }
+  return c;
 }
 
 bool same_window(const std::array<double, 2>& a, const std::array<double, 2>& b) {
@@ -147,11 +158,13 @@ std::vector<PackingRun> read_packing_runs(const std::vector<fs::path>& run_dirs)
       throw InputError(fmt::format("{} and {} have the same ice.seed {}: one packing twice", it->second.string(),
                                    dir.string(), c.ice.seed));
     runs.push_back(read_run(dir, c));
-    if (!same_window(runs.front().window_s, runs.back().window_s))
-      throw InputError(fmt::format("{}: window [{}, {}] s, but {} has [{}, {}] s (report.json window_s): the means "
-                                   "are over different windows",
-                                   dir.string(), runs.back().window_s[0], runs.back().window_s[1],
-                                   run_dirs.front().string(), runs.front().window_s[0], runs.front().window_s[1]));
+    // the window asked for (an early stop may end each run's at its own time: the rule that stopped it is the
+    // same); different windows asked for are different ensembles
+    const auto &a = runs.front().requested_window_s, &b = runs.back().requested_window_s;
+    if (!same_window(a, b))
+      throw InputError(fmt::format("{}: window [{}, {}] s asked for, but {} has [{}, {}] s: the means are over "
+                                   "different windows",
+                                   dir.string(), b[0], b[1], run_dirs.front().string(), a[0], a[1]));
   }
   return runs;
 }

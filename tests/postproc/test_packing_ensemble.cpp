@@ -292,11 +292,27 @@ TEST(PackingEnsemble, RefusesDifferentWindows) {
   const auto runs = write_hand_set(d);
   RunSpec s = spec(3, 11);
   s.window_s = {15.0, 32.5};
-  write_run(runs[2], s);
-  expect_refused(packing_ensemble(runs),
-                 fmt::format("{}: window [15, 32.5] s, but {} has [15, 40] s (report.json window_s): the means are "
-                             "over different windows",
-                             runs[2].string(), runs[0].string()));
+  write_run(runs[2], s, case_text(3, "window_s: [15.0, 40]", "window_s: [15.0, 32.5]"));
+  const auto r = packing_ensemble(runs);
+  EXPECT_EQ(r.rc, 2) << r.out;
+  EXPECT_NE(r.out.find("differs from " + runs[0].string() + "/case.yaml in run.window_s"), std::string::npos)
+      << r.out;
+}
+
+// An early stop ends each run's window at its own time: the runs asked for the same window (meta.json early_stop
+// keeps it), so they are one ensemble; each row shows the window it used.
+TEST(PackingEnsemble, RunsStoppedEarlyAtDifferentTimesAreOneEnsemble) {
+  const auto d = fresh_dir("early");
+  const auto runs = write_hand_set(d);
+  RunSpec s = spec(3, 11);
+  s.window_s = {15.0, 25.0};
+  write_run(runs[2], s,
+            case_text(3, "duration_s: 45.0\n  window_s: [15.0, 40]", "duration_s: 25.0\n  window_s: [15.0, 25]"));
+  write_text(runs[2] / "meta.json",
+             R"({"early_stop": {"t_s": 25.0, "requested_duration_s": 45.0, "requested_window_s": [15.0, 40.0]}})");
+  const auto r = packing_ensemble(runs);
+  EXPECT_EQ(r.rc, 0) << r.out;
+  EXPECT_NE(r.out.find("| [15, 25] |"), std::string::npos) << r.out;
 }
 
 // Two synthetic runs post-processed by brash-post: the ensemble reads the reports it writes.

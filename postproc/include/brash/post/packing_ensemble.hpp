@@ -30,6 +30,7 @@ struct PackingRun {
   std::string case_name;             // case.yaml name
   std::uint64_t seed = 0;            // case.yaml ice.seed
   std::array<double, 2> window_s{};  // report.json window_s (the window used)
+  std::array<double, 2> requested_window_s{};  // as asked for: before an early stop ended it (meta.json early_stop)
   double mean_N = 0, ci95_N = 0;     // report.json resistance_model_N mean, ci95 (block averaging)
   double full_kN = 0, full_ci95_kN = 0;
   std::optional<bool> halves_drift;  // resistance_model_N.window_halves.drifts; none where the report has none
