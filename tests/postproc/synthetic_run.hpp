@@ -7,9 +7,12 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <random>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 namespace brash::post::testing {
 
@@ -37,6 +40,20 @@ struct SyntheticRun {
   // Written values (read back by the tests).
   std::vector<double> t_s, fx_N, fy_N_series, fz_N_series;
 };
+
+// An empty folder <tmp>/brash_<suite>_<name>_<pid> for one test.
+inline std::filesystem::path fresh_dir(const std::string& suite, const std::string& name) {
+  const auto d = std::filesystem::temp_directory_path() / fmt::format("brash_{}_{}_{}", suite, name, ::getpid());
+  std::filesystem::remove_all(d);
+  std::filesystem::create_directories(d);
+  return d;
+}
+
+// A file's bytes ("" when it cannot be read).
+inline std::string read_text(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
 
 inline void write_text(const std::filesystem::path& p, const std::string& s) {
   std::ofstream out(p, std::ios::binary);

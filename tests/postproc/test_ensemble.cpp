@@ -21,24 +21,15 @@
 
 #include "brash/post/ensemble.hpp"
 
+#include "synthetic_run.hpp"
+
 namespace fs = std::filesystem;
+using brash::post::testing::read_text;
 using nlohmann::json;
 
 namespace {
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / fmt::format("brash_ensemble_{}_{}", name, ::getpid());
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+fs::path fresh_dir(const std::string& name) { return brash::post::testing::fresh_dir("ensemble", name); }
 
 // One run of the ensemble: report.json as brash-post writes it (the keys read here), meta.json with the wall time
 // (none when wall_s < 0).
@@ -67,7 +58,7 @@ std::string ensemble(const fs::path& d, int seeds, const std::string& tol_pct, i
       "--name-b np2-dt --label-a '1 rank' --label-b '2 ranks, run.timestep_s=2e-4' --tol-pct {} > '{}' 2>&1",
       BRASH_POST_EXE, d.string(), seeds, tol_pct, (d / "out.txt").string());
   *rc = WEXITSTATUS(std::system(cmd.c_str()));
-  return read(d / "out.txt");
+  return read_text(d / "out.txt");
 }
 
 void expect_line(const std::string& out, const std::string& line) {
@@ -96,7 +87,7 @@ TEST(PairedEnsemble, HandComputedTableAndSummary) {
 
   const auto file = d / "ensemble-np1-vs-np2-dt.json";
   ASSERT_TRUE(fs::exists(file)) << out;
-  const std::string text = read(file);
+  const std::string text = read_text(file);
   EXPECT_EQ(text.back(), '}');  // as the archived summaries: no newline after the object
   const json s = json::parse(text);
   EXPECT_EQ(s["case"], "synth");
@@ -126,7 +117,7 @@ TEST(PairedEnsemble, SummaryFieldsAndReadingBack) {
   int rc = -1;
   ensemble(d, 3, "1", &rc);
   ASSERT_EQ(rc, 0);
-  const auto ours = nlohmann::ordered_json::parse(read(d / "ensemble-np1-vs-np2-dt.json"));
+  const auto ours = nlohmann::ordered_json::parse(read_text(d / "ensemble-np1-vs-np2-dt.json"));
   std::vector<std::string> keys;
   for (const auto& [k, v] : ours.items()) keys.push_back(k);
   EXPECT_EQ(keys, (std::vector<std::string>{"case", "side_a", "side_b", "pairs", "mean_a_N", "mean_b_N", "effect_rel",
@@ -143,7 +134,7 @@ TEST(PairedEnsemble, SummaryFieldsAndReadingBack) {
   const fs::path archive = fs::path(BRASH_SOURCE_DIR) / "evidence/ensembles/quick-hull-flow";
   int compared = 0;
   for (const auto& f : fs::directory_iterator(archive)) {
-    const auto j = json::parse(read(f.path()));
+    const auto j = json::parse(read_text(f.path()));
     ASSERT_FALSE(j.contains("a_N")) << f.path();
     const auto old = brash::post::read_ensemble_summary(j);
     const double ma = j["mean_a_N"].get<double>(), mb = j["mean_b_N"].get<double>();
@@ -160,7 +151,7 @@ TEST(PairedEnsemble, SummaryFieldsAndReadingBack) {
 // The quick case's panel flow on still water: 17.04 -> 8.51 N is -50.1 % on side A, where the mean of the pair
 // gave -66.79 %.
 TEST(PairedEnsemble, OldSummaryReadsOnSideA) {
-  const json j = json::parse(read(fs::path(BRASH_SOURCE_DIR) /
+  const json j = json::parse(read_text(fs::path(BRASH_SOURCE_DIR) /
                                   "evidence/ensembles/quick-hull-flow/ensemble-np1-vs-np1-fluid.hull_flow_panel.json"));
   const auto e = brash::post::read_ensemble_summary(j);
   EXPECT_NEAR(e.effect_rel, -0.5007, 5e-5);
@@ -188,7 +179,7 @@ TEST(PairedEnsemble, StudentQuantileOfPairsMinusOne) {
   int rc = -1;
   ensemble(d, 2, "1", &rc);
   ASSERT_EQ(rc, 0);
-  const json s = json::parse(read(d / "ensemble-np1-vs-np2-dt.json"));
+  const json s = json::parse(read_text(d / "ensemble-np1-vs-np2-dt.json"));
   EXPECT_EQ(s["pairs"], 2);
   // pairs (9.5, 10.5), (17, 23): means 13.25 and 16.75; z_i = (b_i - (16.75 / 13.25) a_i) / 13.25 = -+z
   const double z = (23 - 16.75 / 13.25 * 17) / 13.25, sd = std::sqrt(2 * z * z / 1);
@@ -213,7 +204,7 @@ TEST(PairedEnsemble, MissingWallTimeIsNull) {
   int rc = -1;
   const auto out = ensemble(d, 2, "1", &rc);
   ASSERT_EQ(rc, 0) << out;
-  const json s = json::parse(read(d / "ensemble-np1-vs-np2-dt.json"));
+  const json s = json::parse(read_text(d / "ensemble-np1-vs-np2-dt.json"));
   EXPECT_TRUE(s["wall_a_s"].is_null());
   EXPECT_TRUE(s["speedup"].is_null());
   EXPECT_NEAR(s["effect_rel"].get<double>(), 1.0 / 15, 1e-15);

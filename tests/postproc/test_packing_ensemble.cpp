@@ -27,6 +27,7 @@
 #include "synthetic_run.hpp"
 
 namespace fs = std::filesystem;
+using brash::post::testing::read_text;
 using nlohmann::json;
 using brash::post::testing::synthetic_case_yaml;
 using brash::post::testing::write_text;
@@ -35,19 +36,7 @@ namespace {
 
 constexpr double kLam3_kN = 28.5 * 28.5 * 28.5 / 1000;  // model N -> full-scale kN of the synthetic case
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / fmt::format("brash_packens_{}_{}", name, ::getpid());
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+fs::path fresh_dir(const std::string& name) { return brash::post::testing::fresh_dir("packens", name); }
 
 // The synthetic case with ice.seed `seed`, its hull a file "hull.stl" of the run folder (so every run resolves it to
 // a path of its own, with the same bytes) and its packing the default generated/packing.csv of the run folder (a
@@ -133,7 +122,7 @@ Result packing_ensemble(const std::vector<fs::path>& runs, const std::string& mo
   const auto cmd = fmt::format("'{}' packing-ensemble{} {} > '{}' 2>&1", BRASH_POST_EXE, args, more, log.string());
   Result r;
   r.rc = WEXITSTATUS(std::system(cmd.c_str()));
-  r.out = read(log);
+  r.out = read_text(log);
   return r;
 }
 
@@ -155,7 +144,7 @@ TEST(PackingEnsemble, HandComputedMeanAndBetweenPackingCi) {
   ASSERT_EQ(r.rc, 0) << r.out;
   const fs::path file = d / "packing-ensemble-synthetic.json";
   ASSERT_TRUE(fs::exists(file)) << r.out;
-  const json s = json::parse(read(file));
+  const json s = json::parse(read_text(file));
   const double sd = std::sqrt(14.0 / 3), ci = 3.182446 * sd / 2;
   EXPECT_EQ(s["n"], 4);
   EXPECT_EQ(s["dof"], 3);
@@ -204,7 +193,7 @@ TEST(PackingEnsemble, SummaryKeysAndOut) {
   const auto r = packing_ensemble(runs, fmt::format("--out '{}'", out.string()));
   ASSERT_EQ(r.rc, 0) << r.out;
   EXPECT_FALSE(fs::exists(d / "packing-ensemble-synthetic.json"));
-  const auto s = nlohmann::ordered_json::parse(read(out));
+  const auto s = nlohmann::ordered_json::parse(read_text(out));
   std::vector<std::string> keys;
   for (const auto& [k, v] : s.items()) keys.push_back(k);
   EXPECT_EQ(keys, (std::vector<std::string>{"case", "definition", "window_s", "n", "dof", "t975", "runs", "mean_N",
@@ -331,11 +320,11 @@ TEST(PackingEnsemble, ReadsTheReportsBrashPostWrites) {
     const auto cmd = fmt::format("'{}' --no-plots --no-paraview '{}' > /dev/null 2>&1", BRASH_POST_EXE,
                                  runs.back().string());
     ASSERT_EQ(WEXITSTATUS(std::system(cmd.c_str())), 0) << cmd;
-    means.push_back(json::parse(read(runs.back() / "report.json"))["resistance_model_N"]["mean"].get<double>());
+    means.push_back(json::parse(read_text(runs.back() / "report.json"))["resistance_model_N"]["mean"].get<double>());
   }
   const auto r = packing_ensemble(runs);
   ASSERT_EQ(r.rc, 0) << r.out;
-  const json s = json::parse(read(d / "packing-ensemble-synthetic.json"));
+  const json s = json::parse(read_text(d / "packing-ensemble-synthetic.json"));
   EXPECT_NEAR(s["mean_N"].get<double>(), 0.5 * (means[0] + means[1]), 1e-12);
   EXPECT_NEAR(s["sd_N"].get<double>(), std::abs(means[0] - means[1]) / std::sqrt(2.0), 1e-12);
   EXPECT_EQ(s["runs"][1]["seed"], 7);

@@ -13,17 +13,15 @@
 #include <unistd.h>
 #include <nlohmann/json.hpp>
 
+#include "synthetic_run.hpp"
+
 namespace fs = std::filesystem;
+using brash::post::testing::read_text;
 using nlohmann::json;
 
 namespace {
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / fmt::format("brash_study_{}_{}", name, ::getpid());
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+fs::path fresh_dir(const std::string& name) { return brash::post::testing::fresh_dir("study", name); }
 
 void write_report(const fs::path& run_dir, const std::string& engine, const std::string& model, double speed,
                   double mean, double ci, const std::string& status = "complete") {
@@ -40,13 +38,6 @@ void write_report(const fs::path& run_dir, const std::string& engine, const std:
                        {"R_CH_kN", 1327.25}}},
             {"ratio_fsicr_to_sim", 1327.25 / (mean * scale)}, {"wall_time_s", 100.0}, {"particle_steps", 5.0e7}};
   std::ofstream(run_dir / "report.json") << j.dump(2);
-}
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 int run_tool(const fs::path& dir, const std::string& args) {
@@ -77,8 +68,8 @@ TEST(StudyReport, ExponentFitIsExactOnPowerLaw) {
   ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --summary-json '{}'", (d / "manifest.tsv").string(),
                                     (d / "study.md").string(), (d / "summary.json").string())),
             0)
-      << read(d / "tool.log");
-  const json s = json::parse(read(d / "summary.json"));
+      << read_text(d / "tool.log");
+  const json s = json::parse(read_text(d / "summary.json"));
   ASSERT_EQ(s["fits"].size(), 2u);
   for (const auto& f : s["fits"]) {
     const double n = f["fluid_model"] == "added_mass" ? n_am : n_drag;
@@ -88,7 +79,7 @@ TEST(StudyReport, ExponentFitIsExactOnPowerLaw) {
     EXPECT_NEAR(f["a"].get<double>(), a, 1e-9);
   }
   EXPECT_EQ(s["failed"], 0);
-  const std::string md = read(d / "study.md");
+  const std::string md = read_text(d / "study.md");
   EXPECT_NE(md.find("## (b) Speed sweep"), std::string::npos);
   EXPECT_NE(md.find("1.370 ± 0.000 (SE 0.000)"), std::string::npos) << md;
   EXPECT_NE(md.find("0.820 ± 0.000"), std::string::npos);
@@ -114,7 +105,7 @@ TEST(StudyReport, ExponentCarriesItsConfidenceInterval) {
   ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --summary-json '{}' --plot none", (d / "manifest.tsv").string(),
                                     (d / "study.md").string(), (d / "summary.json").string())),
             0)
-      << read(d / "tool.log");
+      << read_text(d / "tool.log");
   // the least-squares slope and its SE, written out
   double mx = 0, my = 0;
   for (std::size_t i = 0; i < u.size(); ++i) mx += std::log(u[i]) / 5, my += (std::log(10.0 * std::pow(u[i], 1.2)) + e[i]) / 5;
@@ -128,12 +119,12 @@ TEST(StudyReport, ExponentCarriesItsConfidenceInterval) {
   for (std::size_t i = 0; i < u.size(); ++i)
     ssr += std::pow(std::log(10.0 * std::pow(u[i], 1.2)) + e[i] - my - n * (std::log(u[i]) - mx), 2);
   const double se = std::sqrt(ssr / 3 / sxx);
-  const json s = json::parse(read(d / "summary.json"));
+  const json s = json::parse(read_text(d / "summary.json"));
   ASSERT_EQ(s["fits"].size(), 1u);
   EXPECT_NEAR(s["fits"][0]["n"].get<double>(), n, 1e-12);
   EXPECT_NEAR(s["fits"][0]["n_se"].get<double>(), se, 1e-12);
   EXPECT_NEAR(s["fits"][0]["n_ci95"].get<double>(), 3.182 * se, 1e-12);
-  EXPECT_NE(read(d / "study.md").find(fmt::format("{:.3f} ± {:.3f} (SE {:.3f})", n, 3.182 * se, se)),
+  EXPECT_NE(read_text(d / "study.md").find(fmt::format("{:.3f} ± {:.3f} (SE {:.3f})", n, 3.182 * se, se)),
             std::string::npos);
 }
 
@@ -159,8 +150,8 @@ TEST(StudyReport, TablesCarryValuesAndFailuresAreReported) {
   ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --plot none --summary-json '{}'", (d / "manifest.tsv").string(),
                                     (d / "study.md").string(), (d / "summary.json").string())),
             0)
-      << read(d / "tool.log");
-  const std::string md = read(d / "study.md");
+      << read_text(d / "tool.log");
+  const std::string md = read_text(d / "study.md");
   // (a) paper table: values, paper numbers, reduced-case labels, added mass vs drag +25 %.
   EXPECT_NE(md.find("## (a) Paper comparison"), std::string::npos);
   EXPECT_NE(md.find("12.50 ± 1.50"), std::string::npos) << md;
@@ -198,7 +189,7 @@ TEST(StudyReport, TablesCarryValuesAndFailuresAreReported) {
   EXPECT_NE(md.find("**IN PROGRESS** (in progress: model time 7.70 s of 40 s reached)"), std::string::npos);
   // the paper case's run folder does not exist: no set-up table (nothing to read it from)
   EXPECT_EQ(md.find("set-up vs the paper's"), std::string::npos);
-  const json s = json::parse(read(d / "summary.json"));
+  const json s = json::parse(read_text(d / "summary.json"));
   EXPECT_EQ(s["failed"], 4);
   EXPECT_EQ(s["in_progress"], 1);
   EXPECT_EQ(s["runs"].size(), 9u);
@@ -225,8 +216,8 @@ TEST(StudyReport, FluidModelGroupComparesAcrossModels) {
   ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --plot none", (d / "manifest.tsv").string(),
                                     (d / "study.md").string())),
             0)
-      << read(d / "tool.log");
-  const std::string md = read(d / "study.md");
+      << read_text(d / "tool.log");
+  const std::string md = read_text(d / "study.md");
   EXPECT_NE(md.find("### fluid_model (parameter `fluid.model`)"), std::string::npos) << md;
   // 3 / sqrt(1 + 1) = 2.12
   EXPECT_NE(md.find("| both | liggghts | both | 13.00 ± 1.00 | "), std::string::npos) << md;
@@ -260,8 +251,8 @@ TEST(StudyReport, GapToThePaperListsEveryMeasuredCandidate) {
   ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --plot none", (d / "manifest.tsv").string(),
                                     (d / "study.md").string())),
             0)
-      << read(d / "tool.log");
-  const std::string md = read(d / "study.md");
+      << read_text(d / "tool.log");
+  const std::string md = read_text(d / "study.md");
   const double full = 12.0 * std::pow(28.5, 3) * 1.025 / 1000.0;
   ASSERT_NE(md.find("### The gap to the paper"), std::string::npos) << md;
   EXPECT_NE(md.find(fmt::format("the paper's 393 kN is **{:+.1f} %** on it", 100.0 * (393.0 / full - 1.0))),
@@ -282,7 +273,7 @@ TEST(StudyReport, GapToThePaperListsEveryMeasuredCandidate) {
   ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --plot none", (d / "manifest2.tsv").string(),
                                     (d / "study2.md").string())),
             0);
-  EXPECT_EQ(read(d / "study2.md").find("### The gap to the paper"), std::string::npos);
+  EXPECT_EQ(read_text(d / "study2.md").find("### The gap to the paper"), std::string::npos);
 }
 
 // Paired-seed ensembles (group `paired`, run_dir = bench/rank_ensemble.sh's summary JSON): tabled in section
@@ -321,8 +312,8 @@ TEST(StudyReport, PairedEnsemblesAreTabledAndAMissingOneIsNamed) {
                                     (d / "manifest.tsv").string(), (d / "study.md").string(),
                                     (d / "summary.json").string())),
             0)
-      << read(d / "tool.log");
-  const std::string md = read(d / "study.md");
+      << read_text(d / "tool.log");
+  const std::string md = read_text(d / "study.md");
   EXPECT_NE(
       md.find("| P1 | fluid.model: both | both on drag | jbc_quick | `" + soft + ",fluid.model=drag` → `" +
               soft + ",fluid.model=both` | 3 | 20.00 / 22.33 | +11.67 % ± 5.48 % | yes |"),
@@ -350,7 +341,7 @@ TEST(StudyReport, PairedEnsemblesAreTabledAndAMissingOneIsNamed) {
             std::string::npos)
       << md;
   EXPECT_NE(md.find("**1 paired ensemble(s) have no usable summary**"), std::string::npos) << md;
-  const json summary = json::parse(read(d / "summary.json"));
+  const json summary = json::parse(read_text(d / "summary.json"));
   EXPECT_EQ(summary.at("failed").get<int>(), 1);
   ASSERT_EQ(summary.at("paired").size(), 3u);
   EXPECT_FALSE(summary.at("paired").at(2).at("ok").get<bool>());
@@ -378,12 +369,12 @@ TEST(StudyReport, FiguresOfThePaperSectionAreLinkedAndPlotted) {
   ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --plot none", (d / "manifest.tsv").string(),
                                     (d / "doc/study.md").string())),
             0)
-      << read(d / "tool.log");
+      << read_text(d / "tool.log");
   const fs::path figs = d / "doc/study_figs";
   EXPECT_FALSE(fs::exists(figs / "R9_stale.png"));
   EXPECT_FALSE(fs::exists(figs / "R1_force_history.png"));  // linked, not copied
   EXPECT_FALSE(fs::exists(figs / "R1_ice_views.png"));
-  const std::string dat = read(figs / "paper_bars.dat");
+  const std::string dat = read_text(figs / "paper_bars.dat");
   EXPECT_NE(dat.find("\"R1 liggghts added_mass\" " + fmt::format("{}", 12.5 * std::pow(28.5, 3) * 1.025 / 1000.0)),
             std::string::npos)
       << dat;
@@ -392,8 +383,8 @@ TEST(StudyReport, FiguresOfThePaperSectionAreLinkedAndPlotted) {
   EXPECT_NE(dat.find("\"FSICR R_CH ours (R1)\" 1327.25 0"), std::string::npos);  // one bar: both runs have the same
   EXPECT_EQ(dat.find("FSICR R_CH ours (R2)"), std::string::npos);
   EXPECT_NE(dat.find("\"paper FSICR R_CH\" 999 0"), std::string::npos);
-  EXPECT_NE(read(figs / "paper_bars.gp").find("REDUCED-CASE runs, not the paper case"), std::string::npos);
-  const std::string md = read(d / "doc/study.md");
+  EXPECT_NE(read_text(figs / "paper_bars.gp").find("REDUCED-CASE runs, not the paper case"), std::string::npos);
+  const std::string md = read_text(d / "doc/study.md");
   EXPECT_NE(md.find("![R1 force history](../runs/am/force_history.png)"), std::string::npos) << md;
   EXPECT_NE(md.find("![R1 ice views](../runs/am/ice_views_001.00s.png)"), std::string::npos);  // the newest dump's
   EXPECT_NE(md.find("no force_history.png in"), std::string::npos);  // the ODE run has none: said so in the text
@@ -422,14 +413,14 @@ TEST(StudyReport, Fig6BarsShowThePaperCaseAloneWhenItIsThere) {
   ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --plot none", (d / "manifest.tsv").string(),
                                     (d / "doc/study.md").string())),
             0)
-      << read(d / "tool.log");
-  const std::string dat = read(d / "doc/study_figs/paper_bars.dat");
+      << read_text(d / "tool.log");
+  const std::string dat = read_text(d / "doc/study_figs/paper_bars.dat");
   EXPECT_NE(dat.find("\"R2 liggghts drag\""), std::string::npos) << dat;
   EXPECT_EQ(dat.find("\"R1 "), std::string::npos) << dat;
   EXPECT_NE(dat.find("\"FSICR R_CH ours (R2)\""), std::string::npos) << dat;
-  EXPECT_EQ(read(d / "doc/study_figs/paper_bars.gp").find("REDUCED-CASE"), std::string::npos);
+  EXPECT_EQ(read_text(d / "doc/study_figs/paper_bars.gp").find("REDUCED-CASE"), std::string::npos);
   // both runs still have their Fig. 5 analog text and their row in section (a)
-  EXPECT_NE(read(d / "doc/study.md").find("| R1 | **reduced case**"), std::string::npos);
+  EXPECT_NE(read_text(d / "doc/study.md").find("| R1 | **reduced case**"), std::string::npos);
 }
 
 // A copy of a run's outputs without its plots (brash-study's study_runs) names its full run directory in
@@ -451,8 +442,8 @@ TEST(StudyReport, ACopyFindsItsFullRunDirectoryFromAnyWorkingDirectory) {
   ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --plot none", (d / "work/manifest.tsv").string(),
                                     (d / "doc/study.md").string())),
             0)
-      << read(d / "tool.log");
-  const std::string md = read(d / "doc/study.md");
+      << read_text(d / "tool.log");
+  const std::string md = read_text(d / "doc/study.md");
   EXPECT_NE(md.find("![R1 force history](../work/runs/am/force_history.png)"), std::string::npos) << md;
   EXPECT_NE(md.find("![R1 ice views](../work/runs/am/ice_views_001.00s.png)"), std::string::npos) << md;
   EXPECT_NE(md.find("work/runs/am/particles.pvd` and `"), std::string::npos) << md;
@@ -487,8 +478,8 @@ TEST(StudyReport, PaperCaseHistoriesShowEveryRunAndBreakAtGaps) {
   ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --plot none", (d / "manifest.tsv").string(),
                                     (d / "doc/study.md").string())),
             0)
-      << read(d / "tool.log");
-  const std::string dat = read(d / "doc/study_figs/paper_histories.dat");
+      << read_text(d / "tool.log");
+  const std::string dat = read_text(d / "doc/study_figs/paper_histories.dat");
   const double kN = std::pow(28.5, 3) / 1000.0;
   EXPECT_NE(dat.find("# R1 liggghts added_mass\n0.25 " + fmt::format("{}", 2.0 * kN)), std::string::npos)
       << dat;
@@ -500,14 +491,14 @@ TEST(StudyReport, PaperCaseHistoriesShowEveryRunAndBreakAtGaps) {
   std::size_t sets = 0;
   for (auto at = dat.find("\n\n\n"); at != std::string::npos; at = dat.find("\n\n\n", at + 3)) ++sets;
   EXPECT_EQ(sets, 2u) << dat;
-  const std::string gp = read(d / "doc/study_figs/paper_histories.gp");
+  const std::string gp = read_text(d / "doc/study_figs/paper_histories.gp");
   EXPECT_NE(gp.find("index 0 using 1:2 with lines lw 2 title 'R1 liggghts added_mass'"), std::string::npos)
       << gp;
   EXPECT_NE(gp.find("index 1 using 1:2 with lines lw 2 title 'R2 liggghts drag (in progress"),
             std::string::npos);
   if (std::system("command -v gnuplot > /dev/null 2>&1") == 0) {
     EXPECT_NE(
-        read(d / "doc/study.md").find("![paper-case resistance histories](study_figs/paper_histories.png)"),
+        read_text(d / "doc/study.md").find("![paper-case resistance histories](study_figs/paper_histories.png)"),
         std::string::npos);
   }
 }
@@ -536,8 +527,8 @@ TEST(StudyReport, UnfinishedEngineRunIsBinnedBesideLiggghts) {
   ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --plot none", (d / "manifest.tsv").string(),
                                     (d / "doc/study.md").string())),
             0)
-      << read(d / "tool.log");
-  const std::string md = read(d / "doc/study.md");
+      << read_text(d / "tool.log");
+  const std::string md = read_text(d / "doc/study.md");
   EXPECT_NE(md.find("R2 (ode drag, jbc_ia_5kn) has reached t = 4.55 s; beside R1 (liggghts drag)"),
             std::string::npos)
       << md;
@@ -555,7 +546,7 @@ TEST(StudyReport, BadManifestIsAnError) {
   const fs::path d = fresh_dir("bad");
   std::ofstream(d / "manifest.tsv") << "group\trun_dir\n";  // no command column
   EXPECT_NE(run_tool(d, fmt::format("'{}' --out '{}'", (d / "manifest.tsv").string(), (d / "study.md").string())), 0);
-  EXPECT_NE(read(d / "tool.log").find("command"), std::string::npos);
+  EXPECT_NE(read_text(d / "tool.log").find("command"), std::string::npos);
   EXPECT_NE(run_tool(d, fmt::format("'{}' --out '{}'", (d / "nothing.tsv").string(), (d / "study.md").string())), 0);
 }
 
@@ -593,8 +584,8 @@ TEST(StudyReport, PaperSetUpTableComesFromEachRunsCaseAndMeta) {
   ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --plot none --figures none",
                                     (d / "manifest.tsv").string(), (d / "study.md").string())),
             0)
-      << read(d / "tool.log");
-  const std::string md = read(d / "study.md");
+      << read_text(d / "tool.log");
+  const std::string md = read_text(d / "study.md");
   const auto at = md.find("### Our paper-case set-up vs the paper's");
   ASSERT_NE(at, std::string::npos) << md;
   const std::string t = md.substr(at, md.find("\n\n", md.find("| item |", at)) - at);
@@ -629,7 +620,7 @@ TEST(StudyReport, StatusNamesDriftGapsAndEarlyStop) {
   const fs::path d = fresh_dir("drift");
   write_report(d / "runs/a", "liggghts", "added_mass", 0.482, 11.6, 0.4);
   write_report(d / "runs/b", "liggghts", "drag", 0.482, 11.0, 0.4);
-  json ja = json::parse(read(d / "runs/a/report.json")), jb = json::parse(read(d / "runs/b/report.json"));
+  json ja = json::parse(read_text(d / "runs/a/report.json")), jb = json::parse(read_text(d / "runs/b/report.json"));
   ja["resistance_model_N"]["window_halves"] = {{"first_mean", 11.1},
                                                {"second_mean", 12.09},
                                                {"difference", 0.99},
@@ -651,8 +642,8 @@ TEST(StudyReport, StatusNamesDriftGapsAndEarlyStop) {
   ASSERT_EQ(
       run_tool(d, fmt::format("'{}' --out '{}'", (d / "manifest.tsv").string(), (d / "study.md").string())),
       0)
-      << read(d / "tool.log");
-  const std::string md = read(d / "study.md");
+      << read_text(d / "tool.log");
+  const std::string md = read_text(d / "study.md");
   EXPECT_NE(md.find("| 11.60 ± 0.40 |"), std::string::npos) << md;
   EXPECT_NE(md.find("not stationary: the window's second half +8.9 % on its first"), std::string::npos) << md;
   EXPECT_EQ(md.find("+0.9 % on its first"), std::string::npos) << md;  // b: within its CI, not flagged
@@ -679,10 +670,10 @@ TEST(StudyReport, StatusNamesDriftGapsAndEarlyStop) {
   ASSERT_EQ(
       run_tool(d, fmt::format("'{}' --out '{}'", (d / "manifest.tsv").string(), (d / "study.md").string())),
       0)
-      << read(d / "tool.log");
-  EXPECT_NE(read(d / "study.md").find("RECORD HAS GAPS in the window (no force record 21.90-32.50 s)"),
+      << read_text(d / "tool.log");
+  EXPECT_NE(read_text(d / "study.md").find("RECORD HAS GAPS in the window (no force record 21.90-32.50 s)"),
             std::string::npos)
-      << read(d / "study.md");
+      << read_text(d / "study.md");
   fs::remove_all(d);
 }
 
@@ -695,7 +686,7 @@ const fs::path kTemplate = fs::path(BRASH_SOURCE_DIR) / "postproc/study_report/t
 
 // The source template with the text of each block named in TEXTS replaced (written to DIR/study.md.tmpl).
 fs::path template_with(const fs::path& dir, const std::map<std::string, std::string>& texts) {
-  std::istringstream in(read(kTemplate));
+  std::istringstream in(read_text(kTemplate));
   std::string out;
   bool skipping = false;
   for (std::string line; std::getline(in, line);) {
@@ -730,8 +721,8 @@ TEST(StudyReport, TemplateBlocksWriteTheProse) {
   ASSERT_EQ(run_tool(d, fmt::format("'{}' --out '{}' --plot none --template '{}'", (d / "manifest.tsv").string(),
                                     (d / "study.md").string(), tmpl.string())),
             0)
-      << read(d / "tool.log");
-  const std::string md = read(d / "study.md");
+      << read_text(d / "tool.log");
+  const std::string md = read_text(d / "study.md");
   EXPECT_NE(md.find("The resistance rises with speed; these lines join into one paragraph.\n\n"
                     "A second paragraph.\n\n| run | engine |"),
             std::string::npos)
@@ -749,7 +740,7 @@ TEST(StudyReport, MissingPlaceholderNamesTheTemplateAndThePlaceholder) {
   EXPECT_NE(run_tool(d, fmt::format("'{}' --out '{}' --plot none --template '{}'", (d / "manifest.tsv").string(),
                                     (d / "study.md").string(), tmpl.string())),
             0);
-  const std::string log = read(d / "tool.log");
+  const std::string log = read_text(d / "tool.log");
   EXPECT_NE(log.find(tmpl.string()), std::string::npos) << log;
   EXPECT_NE(log.find("{{no_such_value}}"), std::string::npos) << log;
   EXPECT_NE(log.find("speed.method"), std::string::npos) << log;
@@ -763,10 +754,10 @@ TEST(StudyReport, MissingTemplateOrBlockIsAnError) {
   const std::string args = fmt::format("'{}' --out '{}' --plot none", (d / "manifest.tsv").string(),
                                        (d / "study.md").string());
   EXPECT_NE(run_tool(d, args + fmt::format(" --template '{}'", (d / "none.tmpl").string())), 0);
-  EXPECT_NE(read(d / "tool.log").find((d / "none.tmpl").string()), std::string::npos) << read(d / "tool.log");
+  EXPECT_NE(read_text(d / "tool.log").find((d / "none.tmpl").string()), std::string::npos) << read_text(d / "tool.log");
   // a template that lacks a block the tool needs: the block is named with the template's file
   std::string without;
-  std::istringstream in(read(kTemplate));
+  std::istringstream in(read_text(kTemplate));
   bool skipping = false;
   for (std::string line; std::getline(in, line);) {
     if (line.rfind("=== ", 0) == 0) skipping = line == "=== speed.method ===";
@@ -774,7 +765,7 @@ TEST(StudyReport, MissingTemplateOrBlockIsAnError) {
   }
   std::ofstream(d / "without.tmpl") << without;
   EXPECT_NE(run_tool(d, args + fmt::format(" --template '{}'", (d / "without.tmpl").string())), 0);
-  const std::string log = read(d / "tool.log");
+  const std::string log = read_text(d / "tool.log");
   EXPECT_NE(log.find((d / "without.tmpl").string()), std::string::npos) << log;
   EXPECT_NE(log.find("=== speed.method ==="), std::string::npos) << log;
   fs::remove_all(d);
