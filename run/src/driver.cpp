@@ -220,8 +220,8 @@ int drive(Engine& engine, const DriverOptions& o) {
     prepare_case_inputs(c, case_file, tag);
     refuse_what_the_engine_cannot_run(c, case_file, engine);
     Case start = c;  // the packing, or its settled bed (ice.settle, brash/run/settle.hpp)
-    const bool bed_made_now = c.ice.settle && !fs::exists(settled_packing_file(c));
-    start.ice.packing_file = starting_packing(c, tag);
+    const StartingPacking starting = starting_packing(c, tag);
+    start.ice.packing_file = starting.file;
     const auto setup_start = std::chrono::steady_clock::now();
     const auto spheres = read_case_packing(  // checked against the case before any output
         start, c.ice.settle ? kSettledBedMaxOverlapOverD : kPackingMaxOverlapOverD);
@@ -242,7 +242,7 @@ int drive(Engine& engine, const DriverOptions& o) {
     const auto old_meta = resume ? read_meta(run_dir) : nlohmann::json();
     record.emplace(run_dir, old_meta.is_object() ? old_meta : initial_meta(engine, c, spheres.size()));
     if (!resume)  // a resume continues the run its stages describe
-      record->meta()["stages"] = initial_stages(c, packing_made_now, bed_made_now, start.ice.packing_file,
+      record->meta()["stages"] = initial_stages(c, packing_made_now, starting.made_now, starting.file,
                                                 seconds_since(setup_start));
     record->meta()["status"] = "running";
     record->meta()["reason"] = "";

@@ -43,10 +43,10 @@ fs::path settled_packing_file(const Case& c) {
 
 namespace brash::run {
 
-fs::path starting_packing(const Case& c, const std::string& tag) {
-  if (!c.ice.settle) return c.ice.packing_file;
+StartingPacking starting_packing(const Case& c, const std::string& tag) {
+  if (!c.ice.settle) return {c.ice.packing_file};
   const fs::path settled = settled_packing_file(c);
-  if (fs::exists(settled)) return settled;
+  if (fs::exists(settled)) return {settled};
   // brash-settle reads the run's case (overrides applied) from a file beside the bed it writes
   const fs::path case_file = fs::path(settled).replace_extension(".case.yaml");
   std::ofstream(case_file) << dump_case_yaml(c);
@@ -56,7 +56,7 @@ fs::path starting_packing(const Case& c, const std::string& tag) {
   if (rc != 0 || !fs::exists(settled))
     throw InputError(fmt::format("{}: brash-settle failed (exit {}) to settle the packing {} (ice.settle: true)",
                                  case_file.string(), rc, c.ice.packing_file.string()));
-  return settled;
+  return {settled, true};
 }
 
 }  // namespace brash::run

@@ -22,7 +22,12 @@ std::filesystem::path settled_packing_file(const Case& c);
 namespace brash::run {
 
 // The packing a run starts from: c.ice.packing_file, or with ice.settle its settled bed, made by brash-settle
-// (next to this executable) when it is not cached yet. Throws InputError when brash-settle fails.
-std::filesystem::path starting_packing(const Case& c, const std::string& tag);
+// (next to this executable) when it is not cached yet (made_now: by this call). Throws InputError when brash-settle
+// fails.
+struct StartingPacking {
+  std::filesystem::path file;
+  bool made_now = false;
+};
+StartingPacking starting_packing(const Case& c, const std::string& tag);
 
 }  // namespace brash::run
